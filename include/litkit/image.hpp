@@ -1,0 +1,32 @@
+// 8-bit RGB images and PNG output.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace litkit {
+
+// Row-major 8-bit RGB, row 0 at the top (SPEC §1).
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgb;  // width · height · 3
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
+    std::uint8_t* pixel(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+    const std::uint8_t* pixel(int x, int y) const {
+        return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    }
+};
+
+// Writes `image` as a PNG, whole or not at all: the bytes go to a temporary
+// file in the same folder, which is renamed over `path` only once complete.
+// Throws IoError (Access::Write) on failure, leaving any old file untouched.
+void write_png(const Image& image, const std::filesystem::path& path);
+
+// Reads an 8-bit RGB or RGBA PNG (alpha dropped). Throws IoError.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace litkit

@@ -1,0 +1,135 @@
+// A scene as SPEC §5 describes it, and its loading from TOML files.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "litkit/error.hpp"
+#include "litkit/lighting.hpp"
+#include "litkit/mesh.hpp"
+
+namespace litkit {
+
+// The axis-aligned box centred at the origin that bounds the scene (SPEC §1).
+struct Room {
+    float width = 10.0f;
+    float height = 10.0f;
+    float depth = 10.0f;
+};
+
+// The single perspective camera (SPEC §1, AB3).
+struct Observer {
+    glm::vec3 position{0.0f, 0.0f, 5.0f};
+    glm::vec3 look_at{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fov_degrees = 45.0f;  // vertical
+    float near = 0.05f;
+    float far = 1000.0f;
+};
+
+using Rgb8 = std::array<std::uint8_t, 3>;
+
+struct OutputSettings {
+    int width = 800;
+    int height = 600;
+    Rgb8 background{0, 0, 0};
+    float gamma = 1.0f;
+};
+
+struct CubeShape {
+    float size = 1.0f;
+};
+struct SphereShape {
+    float radius = 1.0f;
+    int segments = 64;
+    int rings = 32;
+};
+struct TorusShape {
+    float major_radius = 1.0f;
+    float minor_radius = 0.25f;
+    int segments = 64;
+    int sides = 32;
+};
+struct TeapotShape {
+    float size = 1.0f;
+    int subdivisions = 10;
+};
+struct MeshFileShape {
+    std::filesystem::path file;  // already resolved against the scene file's folder
+};
+using Shape = std::variant<CubeShape, SphereShape, TorusShape, TeapotShape, MeshFileShape>;
+
+// The scene-file name of a shape type: "cube", "sphere", "torus", "teapot", "mesh".
+std::string_view shape_type_name(const Shape& shape);
+
+struct SceneLight {
+    std::string name;  // may be empty
+    Light light;
+};
+
+struct SceneObject {
+    std::string name;  // may be empty
+    Shape shape;
+    glm::vec3 position{0.0f};
+    glm::vec3 rotation_degrees{0.0f};  // applied x, then y, then z
+    float scale = 1.0f;
+    Material material;
+    std::optional<Reflection> reflection;  // overrides Scene::reflection
+    std::optional<Shading> shading;        // overrides Scene::shading
+};
+
+struct Scene {
+    Room room;
+    Observer observer;
+    OutputSettings output;
+    // From [lighting]; missing means "not given" (R11: the caller decides
+    // whether the defaults apply).
+    std::optional<Reflection> reflection;
+    std::optional<Shading> shading;
+    std::vector<SceneLight> lights;
+    std::vector<SceneObject> objects;
+
+    // Where each value came from, keyed by its path in the scene
+    // ("observer.position", "lights[0].position", "objects[2]"), so that
+    // later checks can point at the offending value.
+    std::map<std::string, FileLoc, std::less<>> locations;
+    FileLoc location_of(std::string_view path) const;
+};
+
+// The defaults of R10: Phong reflection, Phong shading.
+inline constexpr Reflection default_reflection = Reflection::Phong;
+inline constexpr Shading default_shading = Shading::Phong;
+
+// Reads and merges scene files (SPEC §5): `lights` and `objects` arrays are
+// concatenated in the order given; every other table may appear in one file
+// only. Throws IoError for a file that cannot be read (missing, not UTF-8,
+// not TOML) and SceneError listing every problem found in the input.
+Scene load_scene(std::span<const std::filesystem::path> files);
+
+// Parses one scene from text. `source_name` is used in messages and its
+// folder resolves relative mesh paths.
+Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);
+
+// The built-in default scene of SPEC §7 (R12): one cube, one point light at
+// the centre of the room, Phong shading, Phong reflection.
+std::string_view default_scene_toml();
+Scene default_scene();
+
+// world = T(position) · Rz · Ry · Rx · S(scale) (SPEC §2).
+glm::mat4 object_to_world(const SceneObject& object);
+
+// The object's mesh in local coordinates (builds the shape or reads the file).
+Mesh object_mesh(const SceneObject& object);
+
+}  // namespace litkit

@@ -1,0 +1,35 @@
+// Built-in shapes and mesh files (SPEC §2), in local coordinates. Built-in
+// meshes are closed where the shape is and wind counter-clockwise seen from
+// outside.
+#pragma once
+
+#include <filesystem>
+
+#include "litkit/mesh.hpp"
+
+namespace litkit {
+
+// Edge `size`, corners (±s/2, ±s/2, ±s/2). Each face's diagonal is chosen so
+// that every corner touches the same number of triangles on each of its three
+// faces: its DD9 normal is then exactly normalize(±1, ±1, ±1).
+Mesh make_cube(float size);
+
+// UV sphere, poles on ±y: `segments` divisions around y, `rings` latitude
+// bands from pole to pole.
+Mesh make_sphere(float radius, int segments, int rings);
+
+// Ring in the xz-plane around the y axis: `segments` divisions around y,
+// `sides` divisions around the tube.
+Mesh make_torus(float major_radius, float minor_radius, int segments, int sides);
+
+// The Utah teapot (Newell's 32 bicubic Bézier patches), upright on +y, height
+// `size`, centred on its bounding box; `subdivisions` steps along each edge
+// of a patch.
+Mesh make_teapot(float size, int subdivisions);
+
+// A Wavefront OBJ file, coordinates as they are. A polygon (v0, v1, …, vk)
+// becomes the fan (v0, vi, vi+1). Throws IoError if the file cannot be read
+// or parsed, with the line where parsing stopped when known.
+Mesh load_obj(const std::filesystem::path& path);
+
+}  // namespace litkit

@@ -1,0 +1,43 @@
+#include "litkit/error.hpp"
+
+namespace litkit {
+
+std::string FileLoc::to_string() const {
+    std::string text = file;
+    if (line > 0) {
+        text += ':' + std::to_string(line);
+        if (column > 0) text += ':' + std::to_string(column);
+    }
+    return text;
+}
+
+std::string Diagnostic::to_string() const {
+    std::string text = location.to_string();
+    if (!text.empty()) text += ": ";
+    text += severity == Severity::Error ? "error: " : "warning: ";
+    return text + message;
+}
+
+namespace {
+std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
+    std::string text;
+    for (const Diagnostic& d : diagnostics) {
+        if (!text.empty()) text += '\n';
+        text += d.to_string();
+    }
+    return text;
+}
+}  // namespace
+
+SceneError::SceneError(std::vector<Diagnostic> diagnostics)
+    : std::runtime_error(join_diagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+
+IoError::IoError(std::string path, std::string reason, FileLoc location, Access access)
+    : std::runtime_error((location.line > 0 ? location.to_string() + ": " : std::string()) +
+                         "error: cannot " + (access == Access::Read ? "read" : "write") + " '" +
+                         path + "': " + reason),
+      path_(std::move(path)),
+      reason_(std::move(reason)),
+      location_(std::move(location)) {}
+
+}  // namespace litkit
