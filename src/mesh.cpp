@@ -1,1 +1,326 @@
-// placeholder: being written
+#include "litkit/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace litkit {
+
+namespace {
+
+// SPEC §2, DD9: positions within this fraction of the bounding-box diagonal
+// are one vertex.
+constexpr double weld_fraction_of_diagonal = 1e-6;
+
+// Welding looks points up in a grid of cubic cells. A cell edge of many weld
+// distances means that most points are farther than the weld distance from
+// every face of their cell, so they look only in their own cell; a point near
+// a face also looks in the (at most 26) neighbouring cells its
+// weld-distance box reaches, which makes welding exact at cell borders.
+constexpr double cells_per_weld_distance = 64.0;
+
+// Cell coordinates are packed into one 64-bit key, 21 bits per axis. The
+// largest coordinate is diagonal / (64 × 1e-6 × diagonal) < 2^14, so 21 bits
+// never clip.
+constexpr int bits_per_cell_axis = 21;
+constexpr std::uint64_t largest_cell_coordinate = (std::uint64_t{1} << bits_per_cell_axis) - 1;
+
+bool is_finite(const glm::vec3& point) {
+    return std::isfinite(point.x) && std::isfinite(point.y) && std::isfinite(point.z);
+}
+
+// Disjoint sets over position indices: welding is the transitive closure of
+// "within the weld distance", so a chain of close points is one vertex.
+class DisjointSets {
+  public:
+    explicit DisjointSets(std::size_t count) : parent_(count) {
+        std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+    }
+
+    std::uint32_t find(std::uint32_t element) {
+        while (parent_[element] != element) {
+            parent_[element] = parent_[parent_[element]];  // path halving
+            element = parent_[element];
+        }
+        return element;
+    }
+
+    void unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a < b) {
+            parent_[b] = a;
+        } else if (b < a) {
+            parent_[a] = b;
+        }
+    }
+
+  private:
+    std::vector<std::uint32_t> parent_;
+};
+
+struct GridPoint {
+    std::uint64_t cell;
+    glm::vec3 position;
+    std::uint32_t index;  // into the mesh's positions
+};
+
+// Sorting by cell, then by x, y, z puts each cell's points together, ordered
+// by x, with exact duplicates next to one another. (A function object, so
+// that std::sort inlines it.)
+struct GridOrder {
+    bool operator()(const GridPoint& a, const GridPoint& b) const {
+        if (a.cell != b.cell) return a.cell < b.cell;
+        if (a.position.x != b.position.x) return a.position.x < b.position.x;
+        if (a.position.y != b.position.y) return a.position.y < b.position.y;
+        return a.position.z < b.position.z;
+    }
+};
+
+std::uint64_t pack_cell(std::uint64_t x, std::uint64_t y, std::uint64_t z) {
+    return (x << (2 * bits_per_cell_axis)) | (y << bits_per_cell_axis) | z;
+}
+
+double squared_distance(const glm::vec3& a, const glm::vec3& b) {
+    const double dx = double(a.x) - double(b.x);
+    const double dy = double(a.y) - double(b.y);
+    const double dz = double(a.z) - double(b.z);
+    return dx * dx + dy * dy + dz * dz;
+}
+
+// The grid of cells over the finite positions, and the weld distance.
+class WeldGrid {
+  public:
+    WeldGrid(const std::vector<glm::vec3>& positions, glm::dvec3 origin, double weld_distance)
+        : origin_(origin), weld_distance_(weld_distance) {
+        // Without a positive weld distance (all points equal, or an infinite
+        // box) only exact duplicates weld: everything goes into cell 0.
+        const bool use_cells = weld_distance > 0.0 && std::isfinite(weld_distance);
+        cell_size_ = use_cells ? cells_per_weld_distance * weld_distance : 0.0;
+
+        points_.reserve(positions.size());
+        for (std::size_t index = 0; index < positions.size(); ++index) {
+            const glm::vec3& position = positions[index];
+            if (!is_finite(position)) continue;  // a NaN would break the sort's ordering
+            const std::uint64_t cell = use_cells ? pack_cell(cell_coordinate(position.x, 0),
+                                                             cell_coordinate(position.y, 1),
+                                                             cell_coordinate(position.z, 2))
+                                                 : 0;
+            points_.push_back({cell, position, static_cast<std::uint32_t>(index)});
+        }
+        std::sort(points_.begin(), points_.end(), GridOrder{});
+    }
+
+    // Unites, in `sets`, every pair of positions within the weld distance.
+    void weld(DisjointSets& sets) {
+        collapse_exact_duplicates(sets);
+        for (std::size_t cell = 0; cell < cells_.size(); ++cell) {
+            for (std::size_t point = cells_[cell].begin; point < cells_[cell].end; ++point) {
+                weld_within_cell(point, cells_[cell].end, sets);
+                if (cell_size_ > 0.0) weld_with_neighbour_cells(point, sets);
+            }
+        }
+    }
+
+  private:
+    struct CellRange {
+        std::uint64_t cell;
+        std::size_t begin;  // into distinct_
+        std::size_t end;
+    };
+
+    std::uint64_t cell_coordinate(double value, int axis) const {
+        const double cell = std::floor((value - origin_[axis]) / cell_size_);
+        if (!(cell > 0.0)) return 0;
+        if (cell >= double(largest_cell_coordinate)) return largest_cell_coordinate;
+        return static_cast<std::uint64_t>(cell);
+    }
+
+    // Exact duplicates (a cube's face corners, a sphere's pole) weld without
+    // distance tests; the rest of the search sees one point per position, so
+    // many copies of one position cost linear time, not quadratic.
+    void collapse_exact_duplicates(DisjointSets& sets) {
+        for (std::size_t i = 0; i < points_.size(); ++i) {
+            const GridPoint& point = points_[i];
+            if (!distinct_.empty()) {
+                const GridPoint& previous = distinct_.back();
+                if (previous.cell == point.cell && previous.position == point.position) {
+                    sets.unite(previous.index, point.index);
+                    continue;
+                }
+            }
+            if (cells_.empty() || cells_.back().cell != point.cell) {
+                cells_.push_back({point.cell, distinct_.size(), distinct_.size()});
+            }
+            distinct_.push_back(point);
+            cells_.back().end = distinct_.size();
+        }
+        points_.clear();
+        points_.shrink_to_fit();
+    }
+
+    void weld_if_close(const GridPoint& a, const GridPoint& b, DisjointSets& sets) const {
+        if (squared_distance(a.position, b.position) <= weld_distance_ * weld_distance_) {
+            sets.unite(a.index, b.index);
+        }
+    }
+
+    // Points later in the same cell, while their x is within reach.
+    void weld_within_cell(std::size_t point, std::size_t cell_end, DisjointSets& sets) const {
+        const GridPoint& here = distinct_[point];
+        for (std::size_t other = point + 1; other < cell_end; ++other) {
+            if (double(distinct_[other].position.x) - double(here.position.x) > weld_distance_) {
+                break;
+            }
+            weld_if_close(here, distinct_[other], sets);
+        }
+    }
+
+    // Neighbouring cells that the box of half-width weld_distance around the
+    // point reaches. Each pair of points in different cells is tested once,
+    // from the point in the cell with the smaller key.
+    void weld_with_neighbour_cells(std::size_t point, DisjointSets& sets) const {
+        const GridPoint& here = distinct_[point];
+        std::uint64_t low[3];
+        std::uint64_t high[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            low[axis] = cell_coordinate(double(here.position[axis]) - weld_distance_, axis);
+            high[axis] = cell_coordinate(double(here.position[axis]) + weld_distance_, axis);
+        }
+        if (low[0] == high[0] && low[1] == high[1] && low[2] == high[2]) return;
+
+        for (std::uint64_t x = low[0]; x <= high[0]; ++x) {
+            for (std::uint64_t y = low[1]; y <= high[1]; ++y) {
+                for (std::uint64_t z = low[2]; z <= high[2]; ++z) {
+                    const std::uint64_t cell = pack_cell(x, y, z);
+                    if (cell > here.cell) weld_with_cell(here, cell, sets);
+                }
+            }
+        }
+    }
+
+    void weld_with_cell(const GridPoint& here, std::uint64_t cell, DisjointSets& sets) const {
+        const auto found = std::lower_bound(
+            cells_.begin(), cells_.end(), cell,
+            [](const CellRange& range, std::uint64_t key) { return range.cell < key; });
+        if (found == cells_.end() || found->cell != cell) return;
+
+        const auto begin = distinct_.begin() + static_cast<std::ptrdiff_t>(found->begin);
+        const auto end = distinct_.begin() + static_cast<std::ptrdiff_t>(found->end);
+        const double lowest_x = double(here.position.x) - weld_distance_;
+        auto other = std::lower_bound(begin, end, lowest_x, [](const GridPoint& p, double x) {
+            return double(p.position.x) < x;
+        });
+        for (; other != end; ++other) {
+            if (double(other->position.x) - double(here.position.x) > weld_distance_) break;
+            weld_if_close(here, *other, sets);
+        }
+    }
+
+    glm::dvec3 origin_;
+    double weld_distance_;
+    double cell_size_ = 0.0;
+    std::vector<GridPoint> points_;
+    std::vector<GridPoint> distinct_;
+    std::vector<CellRange> cells_;
+};
+
+// For each position, the index of the first position of its welded vertex
+// (SPEC §2, DD9). Non-finite positions weld with nothing.
+std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
+    glm::dvec3 lowest(std::numeric_limits<double>::infinity());
+    glm::dvec3 highest(-std::numeric_limits<double>::infinity());
+    for (const glm::vec3& position : positions) {
+        if (!is_finite(position)) continue;
+        lowest = glm::min(lowest, glm::dvec3(position));
+        highest = glm::max(highest, glm::dvec3(position));
+    }
+
+    DisjointSets sets(positions.size());
+    if (lowest.x <= highest.x) {  // at least one finite position
+        const double weld_distance = weld_fraction_of_diagonal * glm::length(highest - lowest);
+        WeldGrid grid(positions, lowest, weld_distance);
+        grid.weld(sets);
+    }
+
+    std::vector<std::uint32_t> vertex_of_position(positions.size());
+    for (std::size_t index = 0; index < positions.size(); ++index) {
+        vertex_of_position[index] = sets.find(static_cast<std::uint32_t>(index));
+    }
+    return vertex_of_position;
+}
+
+}  // namespace
+
+glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    // In double, so that thin or tiny triangles still get an accurate
+    // direction; only an exactly zero (or non-finite) cross product counts as
+    // zero area.
+    const glm::dvec3 cross =
+        glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    const double length = glm::length(cross);
+    if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(0.0f);
+    return glm::vec3(cross / length);
+}
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
+    const std::size_t position_count = mesh.positions.size();
+    for (const auto& triangle : mesh.triangles) {
+        for (const std::uint32_t corner : triangle) {
+            if (corner >= position_count) {
+                throw std::out_of_range("vertex_normals: triangle index " + std::to_string(corner) +
+                                        " out of range (" + std::to_string(position_count) +
+                                        " positions)");
+            }
+        }
+    }
+
+    const std::vector<std::uint32_t> vertex_of_position = weld(mesh.positions);
+
+    // Summing unit normals and normalising gives the direction of their plain
+    // mean (DD9), whatever the count.
+    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
+    for (const auto& triangle : mesh.triangles) {
+        const std::uint32_t vertex_a = vertex_of_position[triangle[0]];
+        const std::uint32_t vertex_b = vertex_of_position[triangle[1]];
+        const std::uint32_t vertex_c = vertex_of_position[triangle[2]];
+        // Two corners welded into one vertex make the triangle zero-area in
+        // the welded mesh, whatever its tiny area before welding.
+        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) continue;
+
+        const glm::vec3 normal = face_normal(
+            mesh.positions[triangle[0]], mesh.positions[triangle[1]], mesh.positions[triangle[2]]);
+        normal_sums[vertex_a] += normal;
+        normal_sums[vertex_b] += normal;
+        normal_sums[vertex_c] += normal;
+    }
+
+    std::vector<glm::vec3> normals(position_count, glm::vec3(0.0f));
+    for (std::size_t index = 0; index < position_count; ++index) {
+        const glm::vec3& sum = normal_sums[vertex_of_position[index]];
+        const float length = glm::length(sum);
+        if (length > 0.0f) normals[index] = sum / length;
+    }
+    return normals;
+}
+
+Bounds bounds(const Mesh& mesh) {
+    if (mesh.positions.empty()) return {};
+    Bounds box{mesh.positions.front(), mesh.positions.front()};
+    for (const glm::vec3& position : mesh.positions) {
+        box.min = glm::min(box.min, position);
+        box.max = glm::max(box.max, position);
+    }
+    return box;
+}
+
+}  // namespace litkit

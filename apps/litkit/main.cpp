@@ -1,1 +1,209 @@
-int main() { return 0; }
+// litkit: the command-line tool. Thin by design: it parses arguments, calls
+// the library and decides how results and errors are shown and which exit
+// status they get (SPEC §6: 0 success, 1 a file could not be read or written,
+// 2 invalid input or usage).
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "litkit/error.hpp"
+#include "litkit/files.hpp"
+#include "litkit/image.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int exit_success = 0;
+constexpr int exit_io = 1;
+constexpr int exit_invalid = 2;
+
+struct RenderArguments {
+    std::vector<std::string> scenes;
+    std::string output;
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<std::string> reflection;
+    std::optional<std::string> shading;
+    int threads = 0;
+    bool yes = false;
+};
+
+// A usage problem found after CLI11's own parsing (exit status 2).
+struct UsageError {
+    std::string message;
+};
+
+litkit::Scene load(const std::vector<std::string>& files) {
+    if (files.empty()) return litkit::default_scene();
+    std::vector<fs::path> paths(files.begin(), files.end());
+    return litkit::load_scene(paths);
+}
+
+// R11: when [lighting] leaves a model out, ask on a terminal; `--yes` answers
+// for the user; without a terminal it is an error that says how to fix it.
+void settle_missing_lighting(litkit::Scene& scene, bool yes) {
+    if (scene.reflection && scene.shading) return;
+    std::string missing = !scene.reflection && !scene.shading ? "shading/reflection model"
+                          : !scene.reflection                ? "reflection model"
+                                                             : "shading model";
+    bool use_defaults = yes;
+    if (!use_defaults && ::isatty(STDIN_FILENO)) {
+        std::cerr << "Scene has no " << missing << ". Use the defaults (phong / phong)? [Y/n] "
+                  << std::flush;
+        std::string answer;
+        if (std::getline(std::cin, answer)) {
+            use_defaults = answer.empty() || answer == "y" || answer == "Y" || answer == "yes" ||
+                           answer == "Yes";
+        }
+        if (!use_defaults) std::cerr << (std::cin ? "" : "\n");
+    } else if (!use_defaults) {
+        throw UsageError{"scene has no " + missing +
+                         " and standard input is not a terminal to ask; add [lighting] with "
+                         "reflection = \"phong\" and shading = \"phong\" to the scene, pass "
+                         "--reflection/--shading, or pass --yes to use the defaults"};
+    }
+    if (!use_defaults) {
+        throw UsageError{"stopped: scene has no " + missing +
+                         "; add [lighting] to the scene or pass --yes"};
+    }
+    if (!scene.reflection) scene.reflection = litkit::default_reflection;
+    if (!scene.shading) scene.shading = litkit::default_shading;
+}
+
+fs::path default_output(const std::vector<std::string>& scenes) {
+    if (scenes.empty()) return "default.png";
+    return fs::path(scenes.front()).filename().replace_extension(".png");
+}
+
+// Every file the run reads: the scene files and the mesh files they name.
+std::vector<fs::path> inputs_of(const litkit::Scene& scene, const std::vector<std::string>& files) {
+    std::vector<fs::path> inputs(files.begin(), files.end());
+    for (const litkit::SceneObject& object : scene.objects) {
+        if (const auto* mesh = std::get_if<litkit::MeshFileShape>(&object.shape))
+            inputs.push_back(mesh->file);
+    }
+    return inputs;
+}
+
+int run_render(const RenderArguments& arguments) {
+    litkit::Scene scene = load(arguments.scenes);
+    if (arguments.width) scene.output.width = *arguments.width;
+    if (arguments.height) scene.output.height = *arguments.height;
+    if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
+    if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
+    settle_missing_lighting(scene, arguments.yes);
+
+    const fs::path output =
+        arguments.output.empty() ? default_output(arguments.scenes) : fs::path(arguments.output);
+    for (const fs::path& input : inputs_of(scene, arguments.scenes)) {
+        if (litkit::same_file(input, output)) {
+            throw UsageError{"refusing to write the image over input file '" + input.string() +
+                             "'; choose another name with -o"};
+        }
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.threads});
+    litkit::Image image = renderer.render();
+    litkit::write_png(image, output);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
+              << ", " << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
+              << " ms)\n";
+    return exit_success;
+}
+
+int run_check(const std::vector<std::string>& scenes) {
+    load(scenes);
+    std::cout << "ok\n";
+    return exit_success;
+}
+
+int run_init(const std::string& file, bool force) {
+    const fs::path path = file.empty() ? fs::path("scene.toml") : fs::path(file);
+    std::error_code error;
+    if (!force && fs::exists(path, error)) {
+        throw UsageError{"'" + path.string() + "' already exists; pass --force to replace it"};
+    }
+    litkit::write_file_atomically(path, litkit::default_scene_toml());
+    std::cout << "litkit: wrote " << path.string() << "; render it with: litkit render "
+              << path.string() << "\n";
+    return exit_success;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"litkit: renders a lit, shaded 3D scene from a scene file"};
+    app.set_version_flag("--version", std::string("litkit ") + LITKIT_VERSION);
+    app.require_subcommand(1);
+
+    RenderArguments render_arguments;
+    CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
+    render->add_option("SCENE", render_arguments.scenes,
+                       "Scene files (TOML), merged in order; none: the built-in default scene");
+    render->add_option("-o,--output", render_arguments.output,
+                       "Output PNG (default: the first scene's name with .png)");
+    render->add_option("--width", render_arguments.width, "Image width in pixels")
+        ->check(CLI::Range(1, 16384));
+    render->add_option("--height", render_arguments.height, "Image height in pixels")
+        ->check(CLI::Range(1, 16384));
+    render->add_option("--reflection", render_arguments.reflection, "Reflection model")
+        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
+    render->add_option("--shading", render_arguments.shading, "Shading model")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+    render->add_option("--threads", render_arguments.threads, "Threads (0: one per core)")
+        ->check(CLI::Range(0, 1024));
+    render->add_flag("-y,--yes", render_arguments.yes,
+                     "Use the default models (phong / phong) where [lighting] leaves one out");
+
+    std::vector<std::string> check_scenes;
+    CLI::App* check = app.add_subcommand("check", "Validate scene files without rendering");
+    check->add_option("SCENE", check_scenes, "Scene files (TOML), merged in order")->required();
+
+    std::string init_file;
+    bool init_force = false;
+    CLI::App* init = app.add_subcommand("init", "Write the default scene as a starting file");
+    init->add_option("FILE", init_file, "File to write (default: scene.toml)");
+    init->add_flag("-f,--force", init_force, "Replace the file if it exists");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& success) {
+        return app.exit(success);
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return exit_invalid;
+    }
+
+    try {
+        if (render->parsed()) return run_render(render_arguments);
+        if (check->parsed()) return run_check(check_scenes);
+        if (init->parsed()) return run_init(init_file, init_force);
+    } catch (const litkit::SceneError& error) {
+        for (const litkit::Diagnostic& diagnostic : error.diagnostics())
+            std::cerr << diagnostic.to_string() << "\n";
+        return exit_invalid;
+    } catch (const litkit::IoError& error) {
+        std::cerr << error.what() << "\n";
+        return exit_io;
+    } catch (const UsageError& error) {
+        std::cerr << "error: " << error.message << "\n";
+        return exit_invalid;
+    } catch (const std::exception& error) {
+        std::cerr << "error: " << error.what() << "\n";
+        return exit_io;
+    }
+    return exit_invalid;
+}

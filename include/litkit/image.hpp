@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace litkit {
@@ -21,8 +22,10 @@ struct Image {
     }
 };
 
-// Writes `image` as a PNG, whole or not at all: the bytes go to a temporary
-// file in the same folder, which is renamed over `path` only once complete.
+// The PNG file bytes of `image` (8-bit RGB, compression level 1).
+std::string encode_png(const Image& image);
+
+// Writes `image` as a PNG, whole or not at all (write_file_atomically).
 // Throws IoError (Access::Write) on failure, leaving any old file untouched.
 void write_png(const Image& image, const std::filesystem::path& path);
 

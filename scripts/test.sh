@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Builds litkit and runs every test. With --sanitize, builds a separate tree
+# under AddressSanitizer and UBSan and runs the suite there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+
+jobs=$(nproc)
+if [ "${1:-}" = "--sanitize" ]; then
+  build=build-asan
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLITKIT_SANITIZE=ON > /dev/null
+  cmake --build "$build" -j "$jobs"
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  # The install check links a plain consumer against the library, which an
+  # instrumented build cannot serve; it runs in the normal build.
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" -E '^install\.'
+else
+  build=build
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$build" -j "$jobs"
+  ctest --test-dir "$build" --output-on-failure -j "$jobs"
+fi

@@ -1,0 +1,86 @@
+#include "thread_pool.hpp"
+
+#include <exception>
+
+namespace litkit {
+
+ThreadPool::ThreadPool(int threads) {
+    if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+    if (threads <= 0) threads = 1;
+    workers_.reserve(static_cast<std::size_t>(threads - 1));
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { worker_loop(); });
+}
+
+ThreadPool::~ThreadPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& worker : workers_) worker.join();
+}
+
+void ThreadPool::run_job(const std::function<void(std::size_t)>& job, std::size_t count) {
+    for (;;) {
+        std::size_t index = next_index_.fetch_add(1, std::memory_order_relaxed);
+        if (index >= count) return;
+        try {
+            job(index);
+        } catch (...) {
+            std::lock_guard lock(mutex_);
+            if (!failure_) failure_ = std::current_exception();
+            next_index_.store(count, std::memory_order_relaxed);  // stop handing out work
+        }
+    }
+}
+
+void ThreadPool::worker_loop() {
+    std::size_t seen_generation = 0;
+    for (;;) {
+        const std::function<void(std::size_t)>* job = nullptr;
+        std::size_t count = 0;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || generation_ != seen_generation; });
+            if (stopping_) return;
+            seen_generation = generation_;
+            // A worker waking after the job finished finds job_ cleared.
+            if (!job_) continue;
+            job = job_;
+            count = job_count_;
+            ++busy_workers_;
+        }
+        run_job(*job, count);
+        {
+            std::lock_guard lock(mutex_);
+            --busy_workers_;
+        }
+        done_.notify_all();
+    }
+}
+
+void ThreadPool::parallel_for(std::size_t count, const std::function<void(std::size_t)>& job) {
+    if (count == 0) return;
+    {
+        std::lock_guard lock(mutex_);
+        job_ = &job;
+        job_count_ = count;
+        next_index_.store(0, std::memory_order_relaxed);
+        failure_ = nullptr;
+        ++generation_;
+    }
+    wake_.notify_all();
+    run_job(job, count);
+    std::exception_ptr failure;
+    {
+        std::unique_lock lock(mutex_);
+        // Workers that had not woken yet find job_ cleared and skip this
+        // generation; wait only for those inside run_job.
+        done_.wait(lock, [&] { return busy_workers_ == 0; });
+        job_ = nullptr;
+        failure = failure_;
+    }
+    if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace litkit

@@ -1,0 +1,49 @@
+// A small fixed thread pool owned by its user (no global state). Runs
+// `parallel_for` jobs: indices 0..count-1 handed out one at a time, so uneven
+// work (bands crowded with triangles) balances itself.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace litkit {
+
+class ThreadPool {
+public:
+    // `threads` ≤ 0 means one per hardware thread. The calling thread works
+    // too, so a pool of N threads starts N − 1 workers.
+    explicit ThreadPool(int threads);
+    ~ThreadPool();
+    ThreadPool(const ThreadPool&) = delete;
+    ThreadPool& operator=(const ThreadPool&) = delete;
+
+    int size() const { return static_cast<int>(workers_.size()) + 1; }
+
+    // Calls job(index) for every index in [0, count), spread over all
+    // threads; returns when all are done. The first exception a job throws
+    // is rethrown here.
+    void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job);
+
+private:
+    void worker_loop();
+    void run_job(const std::function<void(std::size_t)>& job, std::size_t count);
+
+    std::vector<std::thread> workers_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::condition_variable done_;
+    const std::function<void(std::size_t)>* job_ = nullptr;
+    std::size_t job_count_ = 0;
+    std::atomic<std::size_t> next_index_{0};
+    std::size_t generation_ = 0;
+    int busy_workers_ = 0;
+    bool stopping_ = false;
+    std::exception_ptr failure_;
+};
+
+}  // namespace litkit

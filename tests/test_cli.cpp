@@ -1,0 +1,239 @@
+// The command-line tool as a user meets it: exit statuses, messages, files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "litkit/image.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs the CLI with `arguments` in `directory`, standard input from /dev/null
+// (not a terminal).
+CliRun run_cli(const std::string& arguments, const fs::path& directory) {
+    const std::string command = "cd '" + directory.string() + "' && '" LITKIT_CLI "' " +
+                                arguments + " < /dev/null 2>&1";
+    CliRun run;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return run;
+    std::array<char, 4096> buffer;
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.output.append(buffer.data(), n);
+    const int raw = ::pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return run;
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("litkit-cli-" + std::to_string(::getpid()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    void write(const fs::path& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+    }
+    std::string read(const fs::path& name) {
+        std::ifstream in(dir / name, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+    fs::path dir;
+};
+
+const char* scene_without_lighting = R"(
+[room]
+width = 10
+height = 10
+depth = 10
+
+[observer]
+position = [0, 0, 4]
+
+[output]
+width = 64
+height = 48
+
+[[lights]]
+type = "point"
+position = [0, 3, 3]
+intensity = 10
+
+[[objects]]
+type = "sphere"
+radius = 1
+)";
+
+}  // namespace
+
+TEST_F(Cli, VersionPrintsTheVersionAndSucceeds) {
+    CliRun run = run_cli("--version", dir);
+    EXPECT_EQ(run.status, 0);
+    EXPECT_NE(run.output.find("litkit "), std::string::npos) << run.output;
+}
+
+TEST_F(Cli, HelpListsTheCommands) {
+    CliRun run = run_cli("--help", dir);
+    EXPECT_EQ(run.status, 0);
+    for (const char* command : {"render", "check", "init"})
+        EXPECT_NE(run.output.find(command), std::string::npos) << command;
+}
+
+TEST_F(Cli, RenderHelpListsItsOptions) {
+    CliRun run = run_cli("render --help", dir);
+    EXPECT_EQ(run.status, 0);
+    for (const char* option : {"--output", "--width", "--height", "--reflection", "--shading",
+                               "--threads", "--yes"})
+        EXPECT_NE(run.output.find(option), std::string::npos) << option;
+}
+
+TEST_F(Cli, UnknownOptionIsAUsageError) {
+    EXPECT_EQ(run_cli("render --colour red", dir).status, 2);
+    EXPECT_EQ(run_cli("", dir).status, 2);
+}
+
+TEST_F(Cli, BadOptionValuesAreUsageErrors) {
+    EXPECT_EQ(run_cli("render --width 0", dir).status, 2);
+    EXPECT_EQ(run_cli("render --width 20000", dir).status, 2);
+    EXPECT_EQ(run_cli("render --reflection Phong", dir).status, 2);
+    EXPECT_EQ(run_cli("render --shading smooth", dir).status, 2);
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+}
+
+TEST_F(Cli, RenderWithoutSceneDrawsTheDefaultSceneAt800x600) {
+    CliRun run = run_cli("render -o out.png", dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const litkit::Image image = litkit::read_png(dir / "out.png");
+    EXPECT_EQ(image.width, 800);
+    EXPECT_EQ(image.height, 600);
+    // The cube is lit: some pixel is far from the black background, and the
+    // Phong highlight makes some pixel nearly white.
+    int lit = 0, bright = 0;
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+        const int sum = image.rgb[i] + image.rgb[i + 1] + image.rgb[i + 2];
+        lit += sum > 60;
+        bright += image.rgb[i] > 200 && image.rgb[i + 1] > 200 && image.rgb[i + 2] > 200;
+    }
+    EXPECT_GT(lit, 800 * 600 / 50) << "the default cube should cover a good part of the image";
+    EXPECT_GT(bright, 10) << "the default cube should show a highlight";
+}
+
+TEST_F(Cli, RenderDefaultNameAndSizeOverrides) {
+    CliRun run = run_cli("render --width 40 --height 30", dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const litkit::Image image = litkit::read_png(dir / "default.png");
+    EXPECT_EQ(image.width, 40);
+    EXPECT_EQ(image.height, 30);
+}
+
+TEST_F(Cli, MissingLightingWithoutTerminalIsAnErrorNamingTheFixes) {
+    write("scene.toml", scene_without_lighting);
+    CliRun run = run_cli("render scene.toml -o out.png", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("--yes"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("[lighting]"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(Cli, MissingLightingWithYesUsesTheDefaults) {
+    write("scene.toml", scene_without_lighting);
+    CliRun with_yes = run_cli("render scene.toml --yes -o yes.png", dir);
+    ASSERT_EQ(with_yes.status, 0) << with_yes.output;
+    CliRun explicit_models =
+        run_cli("render scene.toml --reflection phong --shading phong -o explicit.png", dir);
+    ASSERT_EQ(explicit_models.status, 0) << explicit_models.output;
+    EXPECT_EQ(litkit::read_png(dir / "yes.png").rgb, litkit::read_png(dir / "explicit.png").rgb);
+}
+
+TEST_F(Cli, ReflectionOverrideChangesThePicture) {
+    write("scene.toml", scene_without_lighting);
+    ASSERT_EQ(run_cli("render scene.toml --yes --reflection lambert -o a.png", dir).status, 0);
+    ASSERT_EQ(run_cli("render scene.toml --yes --reflection phong -o b.png", dir).status, 0);
+    EXPECT_NE(litkit::read_png(dir / "a.png").rgb, litkit::read_png(dir / "b.png").rgb);
+}
+
+TEST_F(Cli, OutputNameDefaultsToTheSceneName) {
+    write("ball.toml", scene_without_lighting);
+    ASSERT_EQ(run_cli("render ball.toml --yes", dir).status, 0);
+    EXPECT_TRUE(fs::exists(dir / "ball.png"));
+}
+
+TEST_F(Cli, MissingSceneFileCannotBeReadExit1) {
+    CliRun run = run_cli("render lights.toml -o out.png", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("error: cannot read 'lights.toml': No such file or directory"),
+              std::string::npos)
+        << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(Cli, RefusesToWriteOverAnInput) {
+    write("scene.toml", scene_without_lighting);
+    const std::string before = read("scene.toml");
+    CliRun run = run_cli("render scene.toml --yes -o scene.toml", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(read("scene.toml"), before);
+}
+
+TEST_F(Cli, FailedRenderLeavesThePreviousOutputUntouched) {
+    write("old.png", "previous output");
+    write("scene.toml", "this is = not [valid toml");
+    CliRun run = run_cli("render scene.toml --yes -o old.png", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_EQ(read("old.png"), "previous output");
+}
+
+TEST_F(Cli, InvalidTomlReportsWhereParsingStopped) {
+    write("scene.toml", "[room]\nwidth = = 3\n");
+    CliRun run = run_cli("check scene.toml", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("scene.toml:2:"), std::string::npos) << run.output;
+}
+
+TEST_F(Cli, TypeMismatchIsInvalidInputExit2WithLocation) {
+    std::string text = scene_without_lighting;
+    text.replace(text.find("radius = 1"), 10, "radius = \"big\"");
+    write("scene.toml", text);
+    CliRun run = run_cli("check scene.toml", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("scene.toml:21:10: error:"), std::string::npos) << run.output;
+}
+
+TEST_F(Cli, InitWritesTheDefaultSceneWhichRendersLikeTheBuiltIn) {
+    ASSERT_EQ(run_cli("init", dir).status, 0);
+    ASSERT_TRUE(fs::exists(dir / "scene.toml"));
+    ASSERT_EQ(run_cli("render scene.toml -o from-file.png --width 80 --height 60", dir).status, 0);
+    ASSERT_EQ(run_cli("render -o built-in.png --width 80 --height 60", dir).status, 0);
+    EXPECT_EQ(litkit::read_png(dir / "from-file.png").rgb,
+              litkit::read_png(dir / "built-in.png").rgb);
+}
+
+TEST_F(Cli, InitRefusesToReplaceAFileUnlessForced) {
+    write("mine.toml", "# my scene\n");
+    EXPECT_EQ(run_cli("init mine.toml", dir).status, 2);
+    EXPECT_EQ(read("mine.toml"), "# my scene\n");
+    EXPECT_EQ(run_cli("init mine.toml --force", dir).status, 0);
+    EXPECT_NE(read("mine.toml"), "# my scene\n");
+}
+
+TEST_F(Cli, CheckSaysOkForAValidScene) {
+    ASSERT_EQ(run_cli("init", dir).status, 0);
+    CliRun run = run_cli("check scene.toml", dir);
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("ok"), std::string::npos);
+}

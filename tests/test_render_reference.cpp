@@ -1,0 +1,884 @@
+// Image tests of the CPU renderer (litkit::render) against an independent
+// reference: a small ray caster in double precision over the same triangles.
+//
+// The reference takes nothing from the library but the local triangles of the
+// built-in shapes (make_sphere, make_cube, make_torus, which have their own
+// tests). The world transform (SPEC §2), face and vertex normals (DD8, DD9),
+// camera rays (SPEC §1), shading models (SPEC §3) and lighting (SPEC §4) are
+// all computed here, by hand, in double.
+//
+// Pixels next to a discontinuity of the picture are not compared, since there
+// a sub-pixel difference in where an edge falls changes a pixel completely:
+// silhouettes (the 3×3 neighbourhood does not hit one and the same object, or
+// background), edges between flat-shaded triangles of different colours, and
+// the edge of a spot light's cone.
+//
+// Set LITKIT_REFERENCE_DUMP to a folder to get both images of every case as
+// PPM files there.
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "litkit/image.hpp"
+#include "litkit/lighting.hpp"
+#include "litkit/mesh.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+#include "litkit/shapes.hpp"
+
+namespace {
+
+using glm::dvec3;
+
+constexpr double pi = 3.14159265358979323846;
+
+dvec3 to_double(const glm::vec3& v) { return {double(v.x), double(v.y), double(v.z)}; }
+
+dvec3 normalize_or_zero(const dvec3& v) {
+    double length = glm::length(v);
+    return length > 0.0 ? v / length : dvec3(0.0);
+}
+
+// ---- Geometry (SPEC §2) ----
+
+// Rotations about the axes, right-handed, angle in degrees.
+dvec3 rotate_x(const dvec3& v, double degrees) {
+    double c = std::cos(degrees * pi / 180.0), s = std::sin(degrees * pi / 180.0);
+    return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+}
+dvec3 rotate_y(const dvec3& v, double degrees) {
+    double c = std::cos(degrees * pi / 180.0), s = std::sin(degrees * pi / 180.0);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+dvec3 rotate_z(const dvec3& v, double degrees) {
+    double c = std::cos(degrees * pi / 180.0), s = std::sin(degrees * pi / 180.0);
+    return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+}
+
+// world = T(position) · Rz · Ry · Rx · S(scale) · local (SPEC §2).
+dvec3 local_to_world(const litkit::SceneObject& object, const glm::vec3& local) {
+    dvec3 rotation = to_double(object.rotation_degrees);
+    dvec3 scaled = double(object.scale) * to_double(local);
+    dvec3 rotated = rotate_z(rotate_y(rotate_x(scaled, rotation.x), rotation.y), rotation.z);
+    return to_double(object.position) + rotated;
+}
+
+// The local triangles, from the library's shape generators only.
+litkit::Mesh shape_mesh(const litkit::Shape& shape) {
+    return std::visit(
+        [](const auto& s) -> litkit::Mesh {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, litkit::CubeShape>) {
+                return litkit::make_cube(s.size);
+            } else if constexpr (std::is_same_v<S, litkit::SphereShape>) {
+                return litkit::make_sphere(s.radius, s.segments, s.rings);
+            } else if constexpr (std::is_same_v<S, litkit::TorusShape>) {
+                return litkit::make_torus(s.major_radius, s.minor_radius, s.segments, s.sides);
+            } else {
+                ADD_FAILURE() << "the reference supports cube, sphere and torus only";
+                return {};
+            }
+        },
+        shape);
+}
+
+// DD9's "one vertex": positions within 1e-6 × the local bounding-box diagonal.
+// Returns, for each position, the index of its group's representative.
+std::vector<std::size_t> weld_positions(const litkit::Mesh& mesh) {
+    const std::size_t count = mesh.positions.size();
+    std::vector<std::size_t> parent(count);
+    std::iota(parent.begin(), parent.end(), std::size_t{0});
+    if (count == 0) return parent;
+
+    dvec3 low(std::numeric_limits<double>::infinity());
+    dvec3 high(-std::numeric_limits<double>::infinity());
+    for (const glm::vec3& p : mesh.positions) {
+        low = glm::min(low, to_double(p));
+        high = glm::max(high, to_double(p));
+    }
+    const double tolerance = 1e-6 * glm::length(high - low);
+
+    auto find = [&](std::size_t i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    // Sweep along x: only positions whose x lie within the tolerance can weld.
+    std::vector<std::size_t> order(count);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return mesh.positions[a].x < mesh.positions[b].x; });
+    for (std::size_t a = 0; a < count; ++a) {
+        const dvec3 pa = to_double(mesh.positions[order[a]]);
+        for (std::size_t b = a + 1; b < count; ++b) {
+            const dvec3 pb = to_double(mesh.positions[order[b]]);
+            if (pb.x - pa.x > tolerance) break;
+            if (glm::length(pb - pa) <= tolerance) {
+                std::size_t ra = find(order[a]), rb = find(order[b]);
+                if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+            }
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i) parent[i] = find(i);
+    return parent;
+}
+
+// ---- Lights and materials in double (SPEC §4) ----
+
+struct RefLight {
+    enum class Kind { Ambient, Directional, Point, Spot } kind = Kind::Ambient;
+    dvec3 radiance{0.0};  // I_L = intensity · colour / 255
+    dvec3 position{0.0};
+    dvec3 travel{0.0};  // directional: unit travel direction; spot: unit axis
+    dvec3 attenuation{0.0};
+    double cos_cutoff = 0.0;
+    double exponent = 0.0;
+};
+
+RefLight to_reference(const litkit::Light& light) {
+    RefLight result;
+    result.radiance = double(light.intensity) * to_double(light.color);
+    std::visit(
+        [&](const auto& kind) {
+            using K = std::decay_t<decltype(kind)>;
+            if constexpr (std::is_same_v<K, litkit::AmbientLight>) {
+                result.kind = RefLight::Kind::Ambient;
+            } else if constexpr (std::is_same_v<K, litkit::DirectionalLight>) {
+                result.kind = RefLight::Kind::Directional;
+                result.travel = glm::normalize(to_double(kind.direction));
+            } else if constexpr (std::is_same_v<K, litkit::PointLight>) {
+                result.kind = RefLight::Kind::Point;
+                result.position = to_double(kind.position);
+                result.attenuation = to_double(kind.attenuation);
+            } else {
+                result.kind = RefLight::Kind::Spot;
+                result.position = to_double(kind.position);
+                result.attenuation = to_double(kind.attenuation);
+                result.travel = glm::normalize(to_double(kind.direction));
+                result.cos_cutoff = std::cos(double(kind.cutoff_degrees) * pi / 180.0);
+                result.exponent = double(kind.exponent);
+            }
+        },
+        light.kind);
+    return result;
+}
+
+struct RefMaterial {
+    dvec3 color;  // C
+    double ka, kd, ks, shininess;
+};
+
+RefMaterial to_reference(const litkit::Material& material) {
+    return {to_double(material.color), double(material.ka), double(material.kd),
+            double(material.ks), double(material.shininess)};
+}
+
+// The colour at one point, with what the caller needs to find discontinuities.
+struct Lit {
+    dvec3 intensity{0.0};    // I, unclamped
+    unsigned cone_mask = 0;  // bit k: the point is inside spot light k's cone
+    // Smallest |c − cos(cutoff)| over the spot lights: near 0, float rounding
+    // in the renderer may put the point on the other side of the cone's edge.
+    double cone_margin = std::numeric_limits<double>::infinity();
+};
+
+// I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S), SPEC §4.
+Lit light_point(litkit::Reflection reflection, const RefMaterial& material,
+                const std::vector<RefLight>& lights, const dvec3& p, const dvec3& normal,
+                const dvec3& eye) {
+    using litkit::Reflection;
+    Lit lit;
+    const dvec3 to_eye = glm::normalize(eye - p);  // V
+    unsigned spot_index = 0;
+    for (const RefLight& light : lights) {
+        if (light.kind == RefLight::Kind::Ambient) {
+            lit.intensity += material.ka * material.color * light.radiance;
+            continue;
+        }
+        dvec3 to_light;  // L
+        double factor;   // f
+        if (light.kind == RefLight::Kind::Directional) {
+            to_light = -light.travel;
+            factor = 1.0;
+        } else {
+            const dvec3 offset = light.position - p;
+            const double d = glm::length(offset);
+            to_light = offset / d;
+            factor = 1.0 / (light.attenuation.x + light.attenuation.y * d +
+                            light.attenuation.z * d * d);
+            if (light.kind == RefLight::Kind::Spot) {
+                const double c = -glm::dot(to_light, light.travel);
+                lit.cone_margin = std::min(lit.cone_margin, std::abs(c - light.cos_cutoff));
+                if (c >= light.cos_cutoff) {
+                    lit.cone_mask |= 1u << spot_index;
+                    factor *= light.exponent == 0.0 ? 1.0 : std::pow(c, light.exponent);
+                } else {
+                    factor = 0.0;
+                }
+                ++spot_index;
+            }
+        }
+        const double n_dot_l = glm::dot(normal, to_light);
+        double diffuse = std::max(n_dot_l, 0.0);
+        double specular = 0.0;
+        switch (reflection) {
+            case Reflection::Lambert:
+                break;
+            case Reflection::HalfLambert:
+                diffuse = (0.5 * n_dot_l + 0.5) * (0.5 * n_dot_l + 0.5);
+                break;
+            case Reflection::Phong: {
+                const dvec3 reflected = 2.0 * n_dot_l * normal - to_light;
+                const double base = glm::dot(reflected, to_eye);
+                if (n_dot_l > 0.0 && base > 0.0) specular = std::pow(base, material.shininess);
+                break;
+            }
+            case Reflection::BlinnPhong: {
+                const dvec3 halfway = glm::normalize(to_light + to_eye);
+                const double base = glm::dot(normal, halfway);
+                if (n_dot_l > 0.0 && base > 0.0) specular = std::pow(base, material.shininess);
+                break;
+            }
+        }
+        lit.intensity += factor * light.radiance *
+                         (material.kd * diffuse * material.color + dvec3(material.ks * specular));
+    }
+    return lit;
+}
+
+// round(255 · clamp(I, 0, 1)^(1/gamma)), SPEC §4.
+std::uint8_t to_byte(double intensity, double gamma) {
+    const double clamped = std::clamp(intensity, 0.0, 1.0);
+    return static_cast<std::uint8_t>(std::lround(255.0 * std::pow(clamped, 1.0 / gamma)));
+}
+
+// ---- The reference ray caster ----
+
+// One object's triangles in world space with everything shading needs.
+struct RefObject {
+    litkit::Shading shading = litkit::Shading::Phong;
+    litkit::Reflection reflection = litkit::Reflection::Phong;
+    RefMaterial material{};
+    std::vector<dvec3> positions;       // world
+    std::vector<dvec3> vertex_normals;  // DD9, world
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<dvec3> face_normals;    // DD8, world
+    std::vector<std::uint32_t> front;   // triangles facing the eye
+    std::vector<Lit> flat_colours;      // per triangle (flat shading)
+    std::vector<Lit> vertex_colours;    // per position (Gouraud shading)
+    dvec3 centre{0.0};
+    double radius = 0.0;  // bounding sphere, for a quick miss
+};
+
+struct ReferenceImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::array<std::uint8_t, 3>> rgb;
+    std::vector<dvec3> intensity;   // I before clamping (object pixels)
+    std::vector<int> object;        // −1: background
+    std::vector<long> triangle;     // the triangle hit, −1 for none
+    std::vector<unsigned> cone_mask;
+    std::vector<double> cone_margin;
+    std::vector<litkit::Shading> shading;
+
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
+};
+
+RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& object,
+                         const std::vector<RefLight>& lights, const dvec3& eye) {
+    RefObject ref;
+    ref.shading = object.shading.value_or(scene.shading.value_or(litkit::default_shading));
+    ref.reflection =
+        object.reflection.value_or(scene.reflection.value_or(litkit::default_reflection));
+    ref.material = to_reference(object.material);
+
+    const litkit::Mesh mesh = shape_mesh(object.shape);
+    for (const glm::vec3& p : mesh.positions) ref.positions.push_back(local_to_world(object, p));
+    ref.triangles = mesh.triangles;
+
+    // DD8 in world space.
+    for (const auto& t : ref.triangles) {
+        const dvec3 &a = ref.positions[t[0]], &b = ref.positions[t[1]], &c = ref.positions[t[2]];
+        ref.face_normals.push_back(normalize_or_zero(glm::cross(b - a, c - a)));
+    }
+
+    // DD9: plain mean of the face normals around each welded vertex; a triangle
+    // with two corners welded together (or no area at all) takes no part.
+    const std::vector<std::size_t> group = weld_positions(mesh);
+    std::vector<dvec3> sums(ref.positions.size(), dvec3(0.0));
+    for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
+        const auto& t = ref.triangles[k];
+        const std::size_t g0 = group[t[0]], g1 = group[t[1]], g2 = group[t[2]];
+        if (g0 == g1 || g1 == g2 || g0 == g2) continue;
+        if (ref.face_normals[k] == dvec3(0.0)) continue;
+        sums[g0] += ref.face_normals[k];
+        sums[g1] += ref.face_normals[k];
+        sums[g2] += ref.face_normals[k];
+    }
+    for (std::size_t i = 0; i < ref.positions.size(); ++i)
+        ref.vertex_normals.push_back(normalize_or_zero(sums[group[i]]));
+
+    // Back faces are culled: keep triangles whose face normal points at the eye.
+    for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
+        const dvec3& a = ref.positions[ref.triangles[k][0]];
+        if (ref.face_normals[k] != dvec3(0.0) && glm::dot(ref.face_normals[k], eye - a) > 0.0)
+            ref.front.push_back(static_cast<std::uint32_t>(k));
+    }
+
+    // SPEC §3: flat lights each triangle once at its centroid with its face
+    // normal; Gouraud lights each vertex with its vertex normal.
+    for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
+        const auto& t = ref.triangles[k];
+        const dvec3 centroid =
+            (ref.positions[t[0]] + ref.positions[t[1]] + ref.positions[t[2]]) / 3.0;
+        ref.flat_colours.push_back(light_point(ref.reflection, ref.material, lights, centroid,
+                                               ref.face_normals[k], eye));
+    }
+    for (std::size_t i = 0; i < ref.positions.size(); ++i)
+        ref.vertex_colours.push_back(light_point(ref.reflection, ref.material, lights,
+                                                 ref.positions[i], ref.vertex_normals[i], eye));
+
+    for (const dvec3& p : ref.positions) ref.centre += p;
+    if (!ref.positions.empty()) ref.centre /= double(ref.positions.size());
+    for (const dvec3& p : ref.positions)
+        ref.radius = std::max(ref.radius, glm::length(p - ref.centre));
+    return ref;
+}
+
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    long triangle = -1;
+    double u = 0.0, v = 0.0;  // barycentrics of corners 1 and 2
+};
+
+// Möller–Trumbore against the front-facing triangles; the nearest hit with t in
+// [t_min, t_max]. A hair of slack on the edges keeps shared edges crack-free.
+void intersect(const RefObject& object, const dvec3& origin, const dvec3& direction, double t_min,
+               double t_max, Hit& hit) {
+    constexpr double edge_slack = 1e-10;
+    for (std::uint32_t k : object.front) {
+        const auto& tri = object.triangles[k];
+        const dvec3& a = object.positions[tri[0]];
+        const dvec3 e1 = object.positions[tri[1]] - a;
+        const dvec3 e2 = object.positions[tri[2]] - a;
+        const dvec3 p = glm::cross(direction, e2);
+        const double det = glm::dot(e1, p);
+        if (det == 0.0) continue;
+        const double inverse = 1.0 / det;
+        const dvec3 s = origin - a;
+        const double u = glm::dot(s, p) * inverse;
+        if (u < -edge_slack || u > 1.0 + edge_slack) continue;
+        const dvec3 q = glm::cross(s, e1);
+        const double v = glm::dot(direction, q) * inverse;
+        if (v < -edge_slack || u + v > 1.0 + edge_slack) continue;
+        const double t = glm::dot(e2, q) * inverse;
+        if (t < t_min || t > t_max || t >= hit.t) continue;
+        hit = {t, long(k), u, v};
+    }
+}
+
+ReferenceImage reference_render(const litkit::Scene& scene) {
+    const litkit::Observer& observer = scene.observer;
+    const int width = scene.output.width, height = scene.output.height;
+    const double gamma = scene.output.gamma;
+    const dvec3 eye = to_double(observer.position);
+
+    std::vector<RefLight> lights;
+    for (const litkit::SceneLight& light : scene.lights) lights.push_back(to_reference(light.light));
+    std::vector<RefObject> objects;
+    for (const litkit::SceneObject& object : scene.objects)
+        objects.push_back(prepare_object(scene, object, lights, eye));
+
+    // Camera basis: right-handed, looking down its −z axis.
+    const dvec3 forward = glm::normalize(to_double(observer.look_at) - eye);
+    const dvec3 right = glm::normalize(glm::cross(forward, to_double(observer.up)));
+    const dvec3 up = glm::cross(right, forward);
+    const double tan_half = std::tan(double(observer.fov_degrees) * pi / 360.0);
+    const double aspect = double(width) / double(height);
+
+    ReferenceImage image;
+    image.width = width;
+    image.height = height;
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    const auto& bg = scene.output.background;
+    image.rgb.assign(count, {bg[0], bg[1], bg[2]});
+    image.intensity.assign(count, dvec3(0.0));
+    image.object.assign(count, -1);
+    image.triangle.assign(count, -1);
+    image.cone_mask.assign(count, 0);
+    image.cone_margin.assign(count, std::numeric_limits<double>::infinity());
+    image.shading.assign(count, litkit::Shading::Phong);
+
+    for (int j = 0; j < height; ++j) {
+        for (int i = 0; i < width; ++i) {
+            const double x = 2.0 * (i + 0.5) / width - 1.0;
+            const double y = 1.0 - 2.0 * (j + 0.5) / height;
+            // Camera-space (x·tan·aspect, y·tan, −1); its component along
+            // `forward` is 1, so the ray parameter t is the view depth.
+            const dvec3 direction = x * tan_half * aspect * right + y * tan_half * up + forward;
+            const dvec3 unit = glm::normalize(direction);
+
+            Hit nearest;
+            int nearest_object = -1;
+            for (std::size_t o = 0; o < objects.size(); ++o) {
+                const RefObject& object = objects[o];
+                // Bounding-sphere test first: most rays miss most objects.
+                const dvec3 to_centre = object.centre - eye;
+                const double along = glm::dot(to_centre, unit);
+                const double miss2 = glm::dot(to_centre, to_centre) - along * along;
+                if (miss2 > object.radius * object.radius * 1.0001 + 1e-12) continue;
+                Hit hit;
+                intersect(object, eye, direction, double(observer.near),
+                          std::min(double(observer.far), nearest.t), hit);
+                if (hit.triangle >= 0) {
+                    nearest = hit;
+                    nearest_object = int(o);
+                }
+            }
+            if (nearest_object < 0) continue;
+
+            const RefObject& object = objects[nearest_object];
+            const auto& tri = object.triangles[nearest.triangle];
+            const double w1 = nearest.u, w2 = nearest.v, w0 = 1.0 - w1 - w2;
+            Lit lit;
+            switch (object.shading) {
+                case litkit::Shading::Flat:
+                    lit = object.flat_colours[nearest.triangle];
+                    break;
+                case litkit::Shading::Gouraud: {
+                    // Ray barycentrics are the perspective-correct ones.
+                    const Lit &c0 = object.vertex_colours[tri[0]], &c1 = object.vertex_colours[tri[1]],
+                              &c2 = object.vertex_colours[tri[2]];
+                    lit.intensity = w0 * c0.intensity + w1 * c1.intensity + w2 * c2.intensity;
+                    lit.cone_margin =
+                        std::min({c0.cone_margin, c1.cone_margin, c2.cone_margin});
+                    break;
+                }
+                case litkit::Shading::Phong: {
+                    const dvec3 p = w0 * object.positions[tri[0]] + w1 * object.positions[tri[1]] +
+                                    w2 * object.positions[tri[2]];
+                    const dvec3 normal = glm::normalize(w0 * object.vertex_normals[tri[0]] +
+                                                        w1 * object.vertex_normals[tri[1]] +
+                                                        w2 * object.vertex_normals[tri[2]]);
+                    lit = light_point(object.reflection, object.material, lights, p, normal, eye);
+                    break;
+                }
+            }
+            const std::size_t at = image.index(i, j);
+            image.object[at] = nearest_object;
+            image.triangle[at] = nearest.triangle;
+            image.intensity[at] = lit.intensity;
+            image.cone_mask[at] = lit.cone_mask;
+            image.cone_margin[at] = lit.cone_margin;
+            image.shading[at] = object.shading;
+            image.rgb[at] = {to_byte(lit.intensity.x, gamma), to_byte(lit.intensity.y, gamma),
+                             to_byte(lit.intensity.z, gamma)};
+        }
+    }
+    return image;
+}
+
+// ---- Comparison ----
+
+// Pixels near a discontinuity of the reference are not compared (see top).
+bool is_comparable(const ReferenceImage& ref, int i, int j) {
+    constexpr double cone_margin_limit = 1e-4;
+    const std::size_t centre = ref.index(i, j);
+    std::array<int, 3> low{255, 255, 255}, high{0, 0, 0};
+    bool several_triangles = false;
+    for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+            const int ni = std::clamp(i + di, 0, ref.width - 1);
+            const int nj = std::clamp(j + dj, 0, ref.height - 1);
+            const std::size_t at = ref.index(ni, nj);
+            if (ref.object[at] != ref.object[centre]) return false;  // silhouette
+            if (ref.object[at] < 0) continue;
+            if (ref.cone_mask[at] != ref.cone_mask[centre]) return false;  // spot cone edge
+            if (ref.cone_margin[at] < cone_margin_limit) return false;
+            several_triangles |= ref.triangle[at] != ref.triangle[centre];
+            for (int c = 0; c < 3; ++c) {
+                low[c] = std::min(low[c], int(ref.rgb[at][c]));
+                high[c] = std::max(high[c], int(ref.rgb[at][c]));
+            }
+        }
+    }
+    if (ref.object[centre] >= 0 && ref.shading[centre] == litkit::Shading::Flat &&
+        several_triangles) {
+        for (int c = 0; c < 3; ++c)
+            if (high[c] - low[c] > 2) return false;  // edge between flat colours
+    }
+    return true;
+}
+
+struct Comparison {
+    long pixels = 0;
+    long counted = 0;
+    long matching = 0;
+    long reference_object_pixels = 0;
+    long rendered_object_pixels = 0;  // of those, how many the render did not leave background
+    int worst_difference = -1;
+    int worst_i = 0, worst_j = 0;
+    std::string worst;
+
+    double matching_fraction() const { return counted ? double(matching) / double(counted) : 0.0; }
+    double counted_fraction() const { return pixels ? double(counted) / double(pixels) : 0.0; }
+};
+
+std::string describe_pixel(const ReferenceImage& ref, const litkit::Image& image, int i, int j) {
+    const std::size_t at = ref.index(i, j);
+    const std::uint8_t* got = image.pixel(i, j);
+    std::ostringstream out;
+    out << "pixel (" << i << ", " << j << "): render (" << int(got[0]) << ", " << int(got[1])
+        << ", " << int(got[2]) << "), reference (" << int(ref.rgb[at][0]) << ", "
+        << int(ref.rgb[at][1]) << ", " << int(ref.rgb[at][2]) << ")";
+    if (ref.object[at] >= 0) {
+        out << ", reference I = (" << ref.intensity[at].x << ", " << ref.intensity[at].y << ", "
+            << ref.intensity[at].z << ") on object " << ref.object[at] << " triangle "
+            << ref.triangle[at];
+    } else {
+        out << ", reference background";
+    }
+    return out.str();
+}
+
+Comparison compare(const ReferenceImage& ref, const litkit::Image& image,
+                   const litkit::Rgb8& background) {
+    Comparison result;
+    result.pixels = long(ref.width) * ref.height;
+    for (int j = 0; j < ref.height; ++j) {
+        for (int i = 0; i < ref.width; ++i) {
+            const std::size_t at = ref.index(i, j);
+            const std::uint8_t* got = image.pixel(i, j);
+            if (ref.object[at] >= 0) {
+                ++result.reference_object_pixels;
+                if (got[0] != background[0] || got[1] != background[1] || got[2] != background[2])
+                    ++result.rendered_object_pixels;
+            }
+            if (!is_comparable(ref, i, j)) continue;
+            ++result.counted;
+            int difference = 0;
+            for (int c = 0; c < 3; ++c)
+                difference = std::max(difference, std::abs(int(got[c]) - int(ref.rgb[at][c])));
+            if (difference <= 2) ++result.matching;
+            if (difference > result.worst_difference) {
+                result.worst_difference = difference;
+                result.worst_i = i;
+                result.worst_j = j;
+            }
+        }
+    }
+    if (result.worst_difference >= 0)
+        result.worst = describe_pixel(ref, image, result.worst_i, result.worst_j);
+    return result;
+}
+
+void write_ppm(const std::filesystem::path& path, int width, int height,
+               const std::vector<std::uint8_t>& rgb) {
+    std::ofstream out(path, std::ios::binary);
+    out << "P6\n" << width << ' ' << height << "\n255\n";
+    out.write(reinterpret_cast<const char*>(rgb.data()), std::streamsize(rgb.size()));
+}
+
+void dump_if_asked(const std::string& name, const ReferenceImage& ref, const litkit::Image& image) {
+    const char* folder = std::getenv("LITKIT_REFERENCE_DUMP");
+    if (folder == nullptr || *folder == '\0') return;
+    std::filesystem::create_directories(folder);
+    std::vector<std::uint8_t> ref_rgb;
+    for (const auto& p : ref.rgb) ref_rgb.insert(ref_rgb.end(), p.begin(), p.end());
+    write_ppm(std::filesystem::path(folder) / (name + "_reference.ppm"), ref.width, ref.height,
+              ref_rgb);
+    write_ppm(std::filesystem::path(folder) / (name + "_render.ppm"), image.width, image.height,
+              image.rgb);
+}
+
+// Renders `scene` with the library and checks it against the reference.
+void expect_render_matches_reference(const litkit::Scene& scene, const std::string& name) {
+    const ReferenceImage ref = reference_render(scene);
+    litkit::RenderOptions options;
+    options.threads = 2;
+    const litkit::Image image = litkit::render(scene, options);
+    ASSERT_EQ(image.width, scene.output.width);
+    ASSERT_EQ(image.height, scene.output.height);
+    ASSERT_EQ(image.rgb.size(), std::size_t(image.width) * image.height * 3);
+    dump_if_asked(name, ref, image);
+
+    const Comparison result = compare(ref, image, scene.output.background);
+    std::printf("[ reference ] %-40s counted %5.1f%% of pixels, %7.3f%% within 2/255, worst %d\n",
+                name.c_str(), 100.0 * result.counted_fraction(),
+                100.0 * result.matching_fraction(), result.worst_difference);
+
+    // The object must be there, in both pictures.
+    EXPECT_GE(result.reference_object_pixels, result.pixels / 20)
+        << name << ": the reference sees too little of the object";
+    EXPECT_GE(result.rendered_object_pixels, result.reference_object_pixels * 9 / 10)
+        << name << ": the render leaves the object's pixels at the background colour";
+    // Not vacuous: most of the picture is compared.
+    EXPECT_GE(result.counted_fraction(), 0.30) << name << ": too few pixels away from edges";
+    EXPECT_GE(result.matching_fraction(), 0.995)
+        << name << ": " << (result.counted - result.matching) << " of " << result.counted
+        << " compared pixels differ by more than 2/255; worst " << result.worst;
+}
+
+// ---- Scenes ----
+
+enum class ShapeKind { Sphere, Cube };
+
+constexpr litkit::Rgb8 background_colour{30, 60, 90};
+
+litkit::Light make_light(litkit::LightKind kind, glm::vec3 color255, float intensity) {
+    litkit::Light light;
+    light.kind = kind;
+    light.color = color255 / 255.0f;
+    light.intensity = intensity;
+    return light;
+}
+
+litkit::SceneObject make_object(ShapeKind shape) {
+    litkit::SceneObject object;
+    if (shape == ShapeKind::Sphere) {
+        object.name = "ball";
+        object.shape = litkit::SphereShape{1.3f, 40, 20};
+        object.position = {0.1f, -0.1f, 0.0f};
+        object.rotation_degrees = {0.0f, 20.0f, 0.0f};
+    } else {
+        object.name = "box";
+        object.shape = litkit::CubeShape{1.5f};
+        object.position = {-0.1f, 0.0f, 0.2f};
+        // Turned so that three faces (front, top, side) face the camera.
+        object.rotation_degrees = {25.0f, 35.0f, 10.0f};
+        object.scale = 1.1f;
+    }
+    object.material.color = glm::vec3(200.0f, 120.0f, 60.0f) / 255.0f;
+    object.material.ka = 0.3f;
+    object.material.kd = 0.7f;
+    object.material.ks = 0.5f;
+    object.material.shininess = 24.0f;
+    return object;
+}
+
+// Off-axis camera, a coloured point light with all three attenuation terms
+// and an ambient light.
+litkit::Scene make_scene(ShapeKind shape, litkit::Reflection reflection, litkit::Shading shading) {
+    litkit::Scene scene;
+    scene.room = {12.0f, 12.0f, 16.0f};
+    scene.observer.position = {1.0f, 1.5f, 5.0f};
+    scene.observer.look_at = {0.0f, 0.0f, 0.0f};
+    scene.observer.fov_degrees = 45.0f;
+    scene.output.width = 160;
+    scene.output.height = 120;
+    scene.output.background = background_colour;
+    scene.reflection = reflection;
+    scene.shading = shading;
+    scene.lights.push_back(
+        {"fill", make_light(litkit::AmbientLight{}, {255.0f, 255.0f, 230.0f}, 0.6f)});
+    scene.lights.push_back({"key", make_light(litkit::PointLight{{2.5f, 2.0f, 3.5f},
+                                                                  {0.5f, 0.1f, 0.05f}},
+                                              {255.0f, 240.0f, 220.0f}, 3.0f)});
+    scene.objects.push_back(make_object(shape));
+    return scene;
+}
+
+litkit::DirectionalLight directional(glm::vec3 direction) {
+    litkit::DirectionalLight light;
+    light.direction = direction;
+    return light;
+}
+
+// A spot from above-front whose cone edge runs across the object.
+litkit::SpotLight spot_across_object() {
+    litkit::SpotLight spot;
+    spot.position = {0.5f, 3.0f, 2.5f};
+    spot.attenuation = {0.2f, 0.1f, 0.05f};
+    spot.direction = glm::vec3(0.3f, 0.0f, 0.0f) - spot.position;
+    spot.cutoff_degrees = 16.0f;
+    spot.exponent = 2.0f;
+    return spot;
+}
+
+std::string name_of(ShapeKind shape) { return shape == ShapeKind::Sphere ? "sphere" : "cube"; }
+std::string name_of(litkit::Reflection reflection) {
+    std::string name(litkit::to_string(reflection));
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+std::string name_of(litkit::Shading shading) { return std::string(litkit::to_string(shading)); }
+
+// ---- The reference itself ----
+
+// One hand-computed pixel. Sphere of radius 1 at the origin, eye at (0, 0, 5),
+// 101 × 101 pixels: the centre pixel (50, 50) has x = y = 0, so its ray runs
+// straight down −z and meets the sphere at p ≈ (0, 0, 1), where N ≈ (0, 0, 1).
+// The point light sits at the eye: d = 4, f = 1/(0 + 0·4 + 1·16) = 1/16, and
+// intensity 16 makes f·I_L = (1, 1, 1). L = V = N, so N·L = 1 and
+// R = 2(N·L)N − L = N, R·V = 1, S = 1^32 = 1. With the white ambient light,
+//   I = k_a·C + k_d·C·1 + k_s·1 = 0.8·C + 0.25, C = (200, 100, 50)/255
+//     = (0.877451, 0.563725, 0.406863)
+// and the pixel is round(255·I) = round(223.75, 143.75, 103.75) = (224, 144, 104).
+TEST(ReferenceRayCaster, CentrePixelOfSphereLitFromTheEyeMatchesHandComputation) {
+    litkit::Scene scene;
+    scene.room = {10.0f, 10.0f, 20.0f};
+    scene.observer.position = {0.0f, 0.0f, 5.0f};
+    scene.output.width = 101;
+    scene.output.height = 101;
+    scene.output.background = background_colour;
+    scene.reflection = litkit::Reflection::Phong;
+    scene.shading = litkit::Shading::Phong;
+    scene.lights.push_back({"", make_light(litkit::AmbientLight{}, {255.0f, 255.0f, 255.0f}, 1.0f)});
+    scene.lights.push_back({"", make_light(litkit::PointLight{{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 1.0f}},
+                                           {255.0f, 255.0f, 255.0f}, 16.0f)});
+    litkit::SceneObject ball;
+    ball.shape = litkit::SphereShape{1.0f, 128, 64};
+    ball.material.color = glm::vec3(200.0f, 100.0f, 50.0f) / 255.0f;
+    ball.material.ka = 0.1f;
+    ball.material.kd = 0.7f;
+    ball.material.ks = 0.25f;
+    ball.material.shininess = 32.0f;
+    scene.objects.push_back(ball);
+
+    const ReferenceImage ref = reference_render(scene);
+    const std::size_t centre = ref.index(50, 50);
+    ASSERT_EQ(ref.object[centre], 0);
+    // The tessellation moves p and N by well under 1e-3.
+    EXPECT_NEAR(ref.intensity[centre].x, 0.877451, 2e-3);
+    EXPECT_NEAR(ref.intensity[centre].y, 0.563725, 2e-3);
+    EXPECT_NEAR(ref.intensity[centre].z, 0.406863, 2e-3);
+    EXPECT_EQ(int(ref.rgb[centre][0]), 224);
+    EXPECT_EQ(int(ref.rgb[centre][1]), 144);
+    EXPECT_EQ(int(ref.rgb[centre][2]), 104);
+
+    // The sphere spans ±atan(1/√24) ≈ ±11.5° of the ±22.5° view: corners miss.
+    const std::size_t corner = ref.index(0, 0);
+    EXPECT_EQ(ref.object[corner], -1);
+    EXPECT_EQ(ref.rgb[corner], (std::array<std::uint8_t, 3>{30, 60, 90}));
+}
+
+// The reference's vertex normals of a cube are the pillowed corners of DD9.
+TEST(ReferenceRayCaster, CubeVertexNormalsArePillowedCorners) {
+    litkit::Scene scene;
+    litkit::SceneObject box;
+    box.shape = litkit::CubeShape{2.0f};
+    const RefObject ref = prepare_object(scene, box, {}, dvec3(0.0, 0.0, 5.0));
+    ASSERT_FALSE(ref.positions.empty());
+    for (std::size_t i = 0; i < ref.positions.size(); ++i) {
+        const dvec3 expected = glm::sign(ref.positions[i]) / std::sqrt(3.0);
+        EXPECT_NEAR(glm::length(ref.vertex_normals[i] - expected), 0.0, 1e-6) << "position " << i;
+    }
+}
+
+// ---- The renderer against the reference ----
+
+using ModelCase = std::tuple<ShapeKind, litkit::Reflection, litkit::Shading>;
+
+class RenderMatchesReference : public ::testing::TestWithParam<ModelCase> {};
+
+// Every reflection × shading model, point + ambient light.
+TEST_P(RenderMatchesReference, UnderPointAndAmbientLight) {
+    const auto [shape, reflection, shading] = GetParam();
+    const std::string name =
+        name_of(shape) + "_" + name_of(reflection) + "_" + name_of(shading) + "_point";
+    expect_render_matches_reference(make_scene(shape, reflection, shading), name);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllModels, RenderMatchesReference,
+    ::testing::Combine(::testing::Values(ShapeKind::Sphere, ShapeKind::Cube),
+                       ::testing::Values(litkit::Reflection::Lambert,
+                                         litkit::Reflection::HalfLambert,
+                                         litkit::Reflection::Phong,
+                                         litkit::Reflection::BlinnPhong),
+                       ::testing::Values(litkit::Shading::Flat, litkit::Shading::Gouraud,
+                                         litkit::Shading::Phong)),
+    [](const ::testing::TestParamInfo<ModelCase>& info) {
+        return name_of(std::get<0>(info.param)) + "_" + name_of(std::get<1>(info.param)) + "_" +
+               name_of(std::get<2>(info.param));
+    });
+
+using LightCase = std::tuple<ShapeKind, litkit::Shading>;
+
+class OtherLightsMatchReference : public ::testing::TestWithParam<LightCase> {};
+
+// A directional light (with ambient), Phong reflection.
+TEST_P(OtherLightsMatchReference, UnderDirectionalLight) {
+    const auto [shape, shading] = GetParam();
+    litkit::Scene scene = make_scene(shape, litkit::Reflection::Phong, shading);
+    scene.lights[1] = {"sun", make_light(directional({-1.0f, -0.8f, -1.5f}),
+                                         {250.0f, 250.0f, 255.0f}, 0.9f)};
+    expect_render_matches_reference(scene,
+                                    name_of(shape) + "_phong_" + name_of(shading) + "_directional");
+}
+
+// A spot light whose cone edge crosses the object, Blinn-Phong reflection.
+TEST_P(OtherLightsMatchReference, UnderSpotLightCrossingTheObject) {
+    const auto [shape, shading] = GetParam();
+    litkit::Scene scene = make_scene(shape, litkit::Reflection::BlinnPhong, shading);
+    scene.lights[1] = {"spot", make_light(spot_across_object(), {255.0f, 255.0f, 255.0f}, 1.6f)};
+    expect_render_matches_reference(scene,
+                                    name_of(shape) + "_blinn_phong_" + name_of(shading) + "_spot");
+}
+
+// All four kinds of light at once, with gamma 2.2 and a rolled camera.
+TEST_P(OtherLightsMatchReference, UnderAllLightKindsWithGamma) {
+    const auto [shape, shading] = GetParam();
+    litkit::Scene scene = make_scene(shape, litkit::Reflection::Phong, shading);
+    scene.output.gamma = 2.2f;
+    scene.observer.up = {0.3f, 1.0f, 0.1f};
+    scene.lights[0].light.intensity = 0.3f;
+    scene.lights.push_back({"sun", make_light(directional({1.0f, -0.5f, -1.0f}),
+                                              {120.0f, 140.0f, 255.0f}, 0.5f)});
+    scene.lights.push_back({"spot", make_light(spot_across_object(), {255.0f, 200.0f, 200.0f}, 1.0f)});
+    expect_render_matches_reference(scene,
+                                    name_of(shape) + "_phong_" + name_of(shading) + "_all_gamma");
+}
+
+// Gamma 2.2 under the plain point light, for a second reflection model.
+TEST_P(OtherLightsMatchReference, WithGammaCorrection) {
+    const auto [shape, shading] = GetParam();
+    litkit::Scene scene = make_scene(shape, litkit::Reflection::HalfLambert, shading);
+    scene.output.gamma = 2.2f;
+    expect_render_matches_reference(
+        scene, name_of(shape) + "_half_lambert_" + name_of(shading) + "_gamma");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllShadings, OtherLightsMatchReference,
+    ::testing::Combine(::testing::Values(ShapeKind::Sphere, ShapeKind::Cube),
+                       ::testing::Values(litkit::Shading::Flat, litkit::Shading::Gouraud,
+                                         litkit::Shading::Phong)),
+    [](const ::testing::TestParamInfo<LightCase>& info) {
+        return name_of(std::get<0>(info.param)) + "_" + name_of(std::get<1>(info.param));
+    });
+
+// Several objects with their own models, overriding [lighting].
+TEST(RenderMatchesReferenceScene, PerObjectModelOverrides) {
+    litkit::Scene scene = make_scene(ShapeKind::Sphere, litkit::Reflection::Phong,
+                                     litkit::Shading::Phong);
+    scene.objects[0].shape = litkit::SphereShape{0.8f, 32, 16};
+    scene.objects[0].position = {-1.3f, 0.0f, 0.0f};
+    scene.objects[0].shading = litkit::Shading::Gouraud;
+    litkit::SceneObject box = make_object(ShapeKind::Cube);
+    box.position = {1.2f, 0.0f, -0.5f};
+    box.scale = 0.7f;
+    box.reflection = litkit::Reflection::BlinnPhong;
+    box.shading = litkit::Shading::Flat;
+    scene.objects.push_back(box);
+    expect_render_matches_reference(scene, "sphere_gouraud_cube_flat_overrides");
+}
+
+}  // namespace
