@@ -1,6 +1,8 @@
 #include "litkit/mesh.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace litkit {
@@ -24,15 +27,21 @@ constexpr double weld_fraction_of_diagonal = 1e-6;
 // Welding looks points up in a grid of cubic cells. A cell edge of many weld
 // distances means that most points are farther than the weld distance from
 // every face of their cell, so they look only in their own cell; a point near
-// a face also looks in the (at most 26) neighbouring cells its
-// weld-distance box reaches, which makes welding exact at cell borders.
+// a face, edge or corner also looks in the neighbouring cells (at most 7) that
+// the box of half-width weld distance around it reaches, which makes welding
+// exact at cell borders.
 constexpr double cells_per_weld_distance = 64.0;
 
-// Cell coordinates are packed into one 64-bit key, 21 bits per axis. The
-// largest coordinate is diagonal / (64 × 1e-6 × diagonal) < 2^14, so 21 bits
-// never clip.
-constexpr int bits_per_cell_axis = 21;
-constexpr std::uint64_t largest_cell_coordinate = (std::uint64_t{1} << bits_per_cell_axis) - 1;
+// Cell coordinates are packed into one 64-bit key with as many bits per axis
+// as that axis needs: the largest coordinate is diagonal / (64 × 1e-6 ×
+// diagonal) < 2^14, so the key has at most 42 bits (the clamp to 21 bits per
+// axis is only a guard).
+constexpr int most_bits_per_cell_axis = 21;
+constexpr std::uint64_t largest_cell_coordinate = (std::uint64_t{1} << most_bits_per_cell_axis) - 1;
+
+// The points are sorted by cell with a least-significant-digit radix sort,
+// this many bits per pass (2048 buckets: a 16 KiB count table).
+constexpr int radix_bits = 11;
 
 bool is_finite(const glm::vec3& point) {
     return std::isfinite(point.x) && std::isfinite(point.y) && std::isfinite(point.z);
@@ -74,20 +83,32 @@ struct GridPoint {
     std::uint32_t index;  // into the mesh's positions
 };
 
-// Sorting by cell, then by x, y, z puts each cell's points together, ordered
-// by x, with exact duplicates next to one another. (A function object, so
-// that std::sort inlines it.)
-struct GridOrder {
+// Within a cell, sorting by x, y, z orders the points by x for the sweep and
+// puts exact duplicates next to one another.
+struct PositionOrder {
     bool operator()(const GridPoint& a, const GridPoint& b) const {
-        if (a.cell != b.cell) return a.cell < b.cell;
         if (a.position.x != b.position.x) return a.position.x < b.position.x;
         if (a.position.y != b.position.y) return a.position.y < b.position.y;
         return a.position.z < b.position.z;
     }
 };
 
-std::uint64_t pack_cell(std::uint64_t x, std::uint64_t y, std::uint64_t z) {
-    return (x << (2 * bits_per_cell_axis)) | (y << bits_per_cell_axis) | z;
+// Stable sort by cell key, `key_bits` wide: O(n) per pass.
+void sort_by_cell(std::vector<GridPoint>& points, int key_bits) {
+    constexpr std::size_t bucket_count = std::size_t{1} << radix_bits;
+    constexpr std::uint64_t digit_mask = bucket_count - 1;
+    if (key_bits == 0) return;
+    std::vector<GridPoint> sorted(points.size());
+    for (int shift = 0; shift < key_bits; shift += radix_bits) {
+        std::array<std::size_t, bucket_count> bucket_start{};
+        for (const GridPoint& point : points) ++bucket_start[(point.cell >> shift) & digit_mask];
+        std::size_t start = 0;
+        for (std::size_t& bucket : bucket_start) start += std::exchange(bucket, start);
+        for (const GridPoint& point : points) {
+            sorted[bucket_start[(point.cell >> shift) & digit_mask]++] = point;
+        }
+        points.swap(sorted);
+    }
 }
 
 double squared_distance(const glm::vec3& a, const glm::vec3& b) {
@@ -100,12 +121,22 @@ double squared_distance(const glm::vec3& a, const glm::vec3& b) {
 // The grid of cells over the finite positions, and the weld distance.
 class WeldGrid {
   public:
-    WeldGrid(const std::vector<glm::vec3>& positions, glm::dvec3 origin, double weld_distance)
-        : origin_(origin), weld_distance_(weld_distance) {
+    // `lowest` and `highest` bound the finite positions.
+    WeldGrid(const std::vector<glm::vec3>& positions, glm::dvec3 lowest, glm::dvec3 highest,
+             double weld_distance)
+        : origin_(lowest), weld_distance_(weld_distance) {
         // Without a positive weld distance (all points equal, or an infinite
         // box) only exact duplicates weld: everything goes into cell 0.
         const bool use_cells = weld_distance > 0.0 && std::isfinite(weld_distance);
-        cell_size_ = use_cells ? cells_per_weld_distance * weld_distance : 0.0;
+        int key_bits = 0;
+        if (use_cells) {
+            cell_size_ = cells_per_weld_distance * weld_distance;
+            for (int axis = 0; axis < 3; ++axis) {
+                bits_[axis] = std::bit_width(cell_coordinate(highest[axis], axis));
+                largest_[axis] = (std::uint64_t{1} << bits_[axis]) - 1;
+                key_bits += bits_[axis];
+            }
+        }
 
         points_.reserve(positions.size());
         for (std::size_t index = 0; index < positions.size(); ++index) {
@@ -117,7 +148,12 @@ class WeldGrid {
                                                  : 0;
             points_.push_back({cell, position, static_cast<std::uint32_t>(index)});
         }
-        std::sort(points_.begin(), points_.end(), GridOrder{});
+        sort_by_cell(points_, key_bits);
+        for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
+            while (end < points_.size() && points_[end].cell == points_[begin].cell) ++end;
+            std::sort(points_.begin() + static_cast<std::ptrdiff_t>(begin),
+                      points_.begin() + static_cast<std::ptrdiff_t>(end), PositionOrder{});
+        }
     }
 
     // Unites, in `sets`, every pair of positions within the weld distance.
@@ -134,14 +170,20 @@ class WeldGrid {
   private:
     struct CellRange {
         std::uint64_t cell;
-        std::size_t begin;  // into distinct_
+        std::size_t begin;  // into points_
         std::size_t end;
     };
 
+    std::uint64_t pack_cell(std::uint64_t x, std::uint64_t y, std::uint64_t z) const {
+        return (((x << bits_[1]) | y) << bits_[2]) | z;
+    }
+
+    // Clamped to the grid: a lookup beyond its last cell finds that cell,
+    // whose points the distance test then rejects.
     std::uint64_t cell_coordinate(double value, int axis) const {
         const double cell = std::floor((value - origin_[axis]) / cell_size_);
         if (!(cell > 0.0)) return 0;
-        if (cell >= double(largest_cell_coordinate)) return largest_cell_coordinate;
+        if (cell >= double(largest_[axis])) return largest_[axis];
         return static_cast<std::uint64_t>(cell);
     }
 
@@ -149,23 +191,23 @@ class WeldGrid {
     // distance tests; the rest of the search sees one point per position, so
     // many copies of one position cost linear time, not quadratic.
     void collapse_exact_duplicates(DisjointSets& sets) {
+        std::size_t distinct_count = 0;  // points_[0, distinct_count) are distinct
         for (std::size_t i = 0; i < points_.size(); ++i) {
-            const GridPoint& point = points_[i];
-            if (!distinct_.empty()) {
-                const GridPoint& previous = distinct_.back();
+            const GridPoint point = points_[i];
+            if (distinct_count > 0) {
+                const GridPoint& previous = points_[distinct_count - 1];
                 if (previous.cell == point.cell && previous.position == point.position) {
                     sets.unite(previous.index, point.index);
                     continue;
                 }
             }
             if (cells_.empty() || cells_.back().cell != point.cell) {
-                cells_.push_back({point.cell, distinct_.size(), distinct_.size()});
+                cells_.push_back({point.cell, distinct_count, distinct_count});
             }
-            distinct_.push_back(point);
-            cells_.back().end = distinct_.size();
+            points_[distinct_count++] = point;
+            cells_.back().end = distinct_count;
         }
-        points_.clear();
-        points_.shrink_to_fit();
+        points_.resize(distinct_count);
     }
 
     void weld_if_close(const GridPoint& a, const GridPoint& b, DisjointSets& sets) const {
@@ -176,12 +218,12 @@ class WeldGrid {
 
     // Points later in the same cell, while their x is within reach.
     void weld_within_cell(std::size_t point, std::size_t cell_end, DisjointSets& sets) const {
-        const GridPoint& here = distinct_[point];
+        const GridPoint& here = points_[point];
         for (std::size_t other = point + 1; other < cell_end; ++other) {
-            if (double(distinct_[other].position.x) - double(here.position.x) > weld_distance_) {
+            if (double(points_[other].position.x) - double(here.position.x) > weld_distance_) {
                 break;
             }
-            weld_if_close(here, distinct_[other], sets);
+            weld_if_close(here, points_[other], sets);
         }
     }
 
@@ -189,7 +231,7 @@ class WeldGrid {
     // point reaches. Each pair of points in different cells is tested once,
     // from the point in the cell with the smaller key.
     void weld_with_neighbour_cells(std::size_t point, DisjointSets& sets) const {
-        const GridPoint& here = distinct_[point];
+        const GridPoint& here = points_[point];
         std::uint64_t low[3];
         std::uint64_t high[3];
         for (int axis = 0; axis < 3; ++axis) {
@@ -214,8 +256,8 @@ class WeldGrid {
             [](const CellRange& range, std::uint64_t key) { return range.cell < key; });
         if (found == cells_.end() || found->cell != cell) return;
 
-        const auto begin = distinct_.begin() + static_cast<std::ptrdiff_t>(found->begin);
-        const auto end = distinct_.begin() + static_cast<std::ptrdiff_t>(found->end);
+        const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(found->begin);
+        const auto end = points_.begin() + static_cast<std::ptrdiff_t>(found->end);
         const double lowest_x = double(here.position.x) - weld_distance_;
         auto other = std::lower_bound(begin, end, lowest_x, [](const GridPoint& p, double x) {
             return double(p.position.x) < x;
@@ -229,8 +271,10 @@ class WeldGrid {
     glm::dvec3 origin_;
     double weld_distance_;
     double cell_size_ = 0.0;
+    std::array<int, 3> bits_{0, 0, 0};  // key bits per axis
+    std::array<std::uint64_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
+                                          largest_cell_coordinate};
     std::vector<GridPoint> points_;
-    std::vector<GridPoint> distinct_;
     std::vector<CellRange> cells_;
 };
 
@@ -248,7 +292,7 @@ std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
     DisjointSets sets(positions.size());
     if (lowest.x <= highest.x) {  // at least one finite position
         const double weld_distance = weld_fraction_of_diagonal * glm::length(highest - lowest);
-        WeldGrid grid(positions, lowest, weld_distance);
+        WeldGrid grid(positions, lowest, highest, weld_distance);
         grid.weld(sets);
     }
 
@@ -274,6 +318,9 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
     const std::size_t position_count = mesh.positions.size();
+    if (position_count > std::numeric_limits<std::uint32_t>::max()) {
+        throw std::length_error("vertex_normals: more positions than 32-bit indices can reach");
+    }
     for (const auto& triangle : mesh.triangles) {
         for (const std::uint32_t corner : triangle) {
             if (corner >= position_count) {

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <glm/vec3.hpp>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -84,7 +85,7 @@ Mesh load_obj(const std::filesystem::path& path) {
     std::string errors;
     const bool parsed = tinyobj::LoadObj(&attributes, &shapes, &materials, &warnings, &errors,
                                          &file, /*readMatFn=*/nullptr, /*triangulate=*/false);
-    if (file.bad()) throw IoError(name, "read error");
+    if (file.bad()) throw IoError(name, errno != 0 ? std::strerror(errno) : "read error");
     if (!parsed) {
         const std::string reason = trimmed(errors);
         throw IoError(name, reason.empty() ? "not a valid OBJ file" : reason,
@@ -110,11 +111,11 @@ Mesh load_obj(const std::filesystem::path& path) {
     }
 
     std::size_t face_number = 0;  // across all shapes, in file order
+    std::vector<std::uint32_t> corners;
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t next_index = 0;
         for (const unsigned int corner_count : shape.mesh.num_face_vertices) {
-            std::vector<std::uint32_t> corners;
-            corners.reserve(corner_count);
+            corners.clear();
             for (unsigned int corner = 0; corner < corner_count; ++corner) {
                 const int vertex = shape.mesh.indices[next_index++].vertex_index;
                 if (vertex < 0 || static_cast<std::size_t>(vertex) >= vertex_count) {

@@ -4,11 +4,13 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace litkit {
 
@@ -125,7 +127,11 @@ Mesh make_sphere(float radius, int segments, int rings) {
 
     // Going down a meridian and then towards increasing azimuth turns
     // counter-clockwise seen from outside: at azimuth 0 (the +z side),
-    // (−y) × (+x) = +z.
+    // (−y) × (+x) = +z. With the alternating diagonals every DD9 normal is
+    // radial but on the circles next to the poles: a vertex there lies in
+    // the pole's 2 thin triangles and in 2 or 4 of the band's below, which
+    // cannot balance for both kinds; those with 4 lean towards the equator
+    // by about a sixth of the latitude step.
     auto vertex = [&](int circle, int segment) {
         return 1 + to_index(circle - 1) * to_index(segments) + to_index(segment % segments);
     };

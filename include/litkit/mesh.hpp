@@ -22,8 +22,11 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 
 // DD9: for each entry of mesh.positions, the normalised plain mean of the face
 // normals of every triangle touching that position, where positions within
-// 1e-6 × the bounding-box diagonal count as one. Zero-area triangles take no
-// part. A position touched by no usable triangle gets the zero vector.
+// 1e-6 × the bounding-box diagonal count as one (transitively: a chain of such
+// positions is one vertex). Zero-area triangles take no part, nor do
+// triangles two of whose corners count as one. A position touched by no
+// usable triangle gets the zero vector. O(n log n); throws std::out_of_range
+// for a triangle index beyond the positions.
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
 
 // Axis-aligned bounding box of the positions (both zero for an empty mesh).

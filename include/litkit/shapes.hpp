@@ -1,6 +1,8 @@
 // Built-in shapes and mesh files (SPEC §2), in local coordinates. Built-in
 // meshes are closed where the shape is and wind counter-clockwise seen from
-// outside.
+// outside. The make_ functions throw std::invalid_argument for arguments out
+// of range (sizes not positive, segments or sides below 3, rings below 2,
+// subdivisions below 1, a torus's minor radius not below its major radius).
 #pragma once
 
 #include <filesystem>
@@ -29,7 +31,8 @@ Mesh make_teapot(float size, int subdivisions);
 
 // A Wavefront OBJ file, coordinates as they are. A polygon (v0, v1, …, vk)
 // becomes the fan (v0, vi, vi+1). Throws IoError if the file cannot be read
-// or parsed, with the line where parsing stopped when known.
+// or parsed, has no faces, or a face refers to a vertex it does not define,
+// with the line where parsing stopped when known.
 Mesh load_obj(const std::filesystem::path& path);
 
 }  // namespace litkit
