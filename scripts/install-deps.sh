@@ -1,12 +1,26 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package litkit needs to build, test and benchmark.
-# Safe to run again: apt-get skips what is already there.
+# Installs the Debian 12 packages litkit needs. Safe to run again: apt-get
+# skips what is already there.
+#
+#   scripts/install-deps.sh          build, test and benchmark
+#   scripts/install-deps.sh --fuzz   the same, plus clang and its sanitizer
+#                                    and libFuzzer runtimes (a few hundred MB),
+#                                    which only scripts/fuzz.sh needs
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+# Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
+fuzz_packages=(clang libclang-rt-14-dev)
+
+case "${1:-}" in
+  "") ;;
+  --fuzz) packages+=("${fuzz_packages[@]}") ;;
+  *) echo "usage: $0 [--fuzz]" >&2; exit 2 ;;
+esac
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

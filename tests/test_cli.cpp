@@ -20,11 +20,9 @@ struct CliRun {
     std::string output;  // stdout and stderr together
 };
 
-// Runs the CLI with `arguments` in `directory`, standard input from /dev/null
-// (not a terminal).
-CliRun run_cli(const std::string& arguments, const fs::path& directory) {
-    const std::string command = "cd '" + directory.string() + "' && '" LITKIT_CLI "' " +
-                                arguments + " < /dev/null 2>&1";
+// Runs a shell command, standard input from /dev/null (not a terminal).
+CliRun run_command(const std::string& command_line) {
+    const std::string command = command_line + " < /dev/null 2>&1";
     CliRun run;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) return run;
@@ -34,6 +32,25 @@ CliRun run_cli(const std::string& arguments, const fs::path& directory) {
     const int raw = ::pclose(pipe);
     run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     return run;
+}
+
+// Runs the CLI with `arguments` in `directory`, standard input from /dev/null
+// (not a terminal).
+CliRun run_cli(const std::string& arguments, const fs::path& directory) {
+    return run_command("cd '" + directory.string() + "' && '" LITKIT_CLI "' " + arguments);
+}
+
+// Runs a copy of the CLI placed in `directory` as the unprivileged user
+// nobody, for checks that permission bits cannot make as root. The copy
+// keeps the binary reachable for nobody wherever the build tree lives.
+CliRun run_cli_as_nobody(const std::string& arguments, const fs::path& directory) {
+    std::error_code error;
+    fs::copy_file(LITKIT_CLI, directory / "litkit-copy", fs::copy_options::overwrite_existing,
+                  error);
+    if (error) return {};
+    return run_command("cd '" + directory.string() +
+                       "' && setpriv --reuid=65534 --regid=65534 --clear-groups ./litkit-copy " +
+                       arguments);
 }
 
 class Cli : public ::testing::Test {
@@ -180,6 +197,98 @@ TEST_F(Cli, MissingSceneFileCannotBeReadExit1) {
               std::string::npos)
         << run.output;
     EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(Cli, DirectoryAsSceneCannotBeReadExit1) {
+    fs::create_directory(dir / "scenes.toml");
+    CliRun run = run_cli("render scenes.toml --yes -o out.png", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("error: cannot read 'scenes.toml': Is a directory"),
+              std::string::npos)
+        << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(Cli, SceneWithoutReadPermissionCannotBeReadExit1) {
+    write("locked.toml", scene_without_lighting);
+    fs::permissions(dir / "locked.toml", fs::perms::none);
+    CliRun run;
+    if (::geteuid() != 0) {
+        run = run_cli("check locked.toml", dir);
+    } else {
+        // Root reads whatever the permission bits say: ask as nobody.
+        if (run_cli_as_nobody("--version", dir).status != 0)
+            GTEST_SKIP() << "running as root, and cannot run the CLI as user nobody (setpriv): "
+                            "permission bits do not stop root's reads";
+        run = run_cli_as_nobody("check locked.toml", dir);
+    }
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("error: cannot read 'locked.toml': Permission denied"),
+              std::string::npos)
+        << run.output;
+}
+
+TEST_F(Cli, PathThroughAFileCannotBeReadExit1) {
+    write("file.toml", scene_without_lighting);
+    CliRun run = run_cli("check file.toml/x.toml", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("error: cannot read 'file.toml/x.toml': Not a directory"),
+              std::string::npos)
+        << run.output;
+}
+
+TEST_F(Cli, SecondSceneFileMissingCannotBeReadExit1) {
+    write("room.toml", scene_without_lighting);
+    CliRun run = run_cli("render room.toml lights.toml --yes -o out.png", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("error: cannot read 'lights.toml': No such file or directory"),
+              std::string::npos)
+        << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+    EXPECT_EQ(run_cli("check room.toml lights.toml", dir).status, 1);
+}
+
+TEST_F(Cli, NonUtf8SceneCannotBeReadExit1WithItsPlace) {
+    // "café" in Latin-1: the é is the single byte 0xE9.
+    write("scene.toml", "[room]\nwidth = 10\n# caf\xe9\n");
+    CliRun run = run_cli("check scene.toml", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("scene.toml:3:"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("error: cannot read 'scene.toml': "), std::string::npos)
+        << run.output;
+}
+
+TEST_F(Cli, TextThatIsNotTomlCannotBeReadExit1WithItsPlace) {
+    write("notes.toml", "Dear litkit,\nplease draw me a teapot.\n");
+    CliRun run = run_cli("check notes.toml", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("notes.toml:1:"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("error: cannot read 'notes.toml': "), std::string::npos)
+        << run.output;
+}
+
+TEST_F(Cli, PictureGivenAsSceneCannotBeReadExit1) {
+    ASSERT_EQ(run_cli("render --width 8 --height 8 -o picture.png", dir).status, 0);
+    CliRun run = run_cli("render picture.png --yes -o out.png", dir);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("picture.png:1:"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("error: cannot read 'picture.png': "), std::string::npos)
+        << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(Cli, UsageErrorsExit2WithAHint) {
+    for (const char* arguments :
+         {"", "frobnicate", "render --colour red", "render --width 0", "render --threads -1",
+          "render --shading smooth", "check", "init a.toml b.toml"}) {
+        CliRun run = run_cli(arguments, dir);
+        EXPECT_EQ(run.status, 2) << arguments << "\n" << run.output;
+        EXPECT_NE(run.output.find("Run with --help for more information."), std::string::npos)
+            << arguments << "\n"
+            << run.output;
+    }
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+    EXPECT_FALSE(fs::exists(dir / "a.toml"));
 }
 
 TEST_F(Cli, RefusesToWriteOverAnInput) {

@@ -105,6 +105,10 @@ struct Scene {
     // later checks can point at the offending value.
     std::map<std::string, FileLoc, std::less<>> locations;
     FileLoc location_of(std::string_view path) const;
+
+    // Problems that do not stop rendering but are surely unintended (no
+    // lights, an object outside the view), found while loading.
+    std::vector<Diagnostic> warnings;
 };
 
 // The defaults of R10: Phong reflection, Phong shading.

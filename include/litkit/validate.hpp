@@ -1,0 +1,21 @@
+// The value and geometry rules of SPEC §6 (R2, R8), checked on a loaded
+// scene before anything renders. The loader (scene.hpp) checks the shape of
+// the input (types, keys, spelling); this checks what the values mean.
+#pragma once
+
+#include <vector>
+
+#include "litkit/error.hpp"
+#include "litkit/scene.hpp"
+
+namespace litkit {
+
+// Every problem of `scene`, errors and warnings, each located through
+// scene.locations, in the order room, output, observer, lights, objects.
+// Shape parameters are checked before any mesh is built, so a huge
+// `segments` is refused before it allocates. Mesh files are read to test
+// their geometry: one that cannot be read throws IoError located at its
+// `file` key.
+std::vector<Diagnostic> validate_scene(const Scene& scene);
+
+}  // namespace litkit

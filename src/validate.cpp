@@ -1,0 +1,398 @@
+// SPEC §6: ranges, then geometry (inside the room, overlaps, lights inside
+// objects, the observer), then warnings. Each rule reports every offender,
+// located at the offending value.
+#include "litkit/validate.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "litkit/convex.hpp"
+#include "litkit/shapes.hpp"
+
+namespace litkit {
+
+namespace {
+
+std::string number_text(float value) {
+    char buffer[32];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+std::string vector_text(const glm::vec3& v) {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + s.
+    std::string text("[");
+    text += number_text(v.x);
+    text += ", ";
+    text += number_text(v.y);
+    text += ", ";
+    text += number_text(v.z);
+    text += ']';
+    return text;
+}
+
+// "lights[0] 'key'" when named, "lights[0]" otherwise (the loader's style).
+std::string subject(std::string_view kind, std::size_t index, const std::string& name) {
+    std::string text = std::string(kind) + "[" + std::to_string(index) + "]";
+    if (!name.empty()) text += " '" + name + "'";
+    return text;
+}
+
+std::string object_label(const SceneObject& object, std::size_t index) {
+    return object.name.empty() ? "objects[" + std::to_string(index) + "]"
+                               : "object '" + object.name + "'";
+}
+
+std::string light_label(const SceneLight& light, std::size_t index) {
+    return light.name.empty() ? "lights[" + std::to_string(index) + "]"
+                              : "light '" + light.name + "'";
+}
+
+const glm::vec3* light_position(const Light& light) {
+    if (const auto* point = std::get_if<PointLight>(&light.kind)) return &point->position;
+    if (const auto* spot = std::get_if<SpotLight>(&light.kind)) return &spot->position;
+    return nullptr;
+}
+
+class Validator {
+public:
+    explicit Validator(const Scene& scene) : scene_(scene) {}
+
+    std::vector<Diagnostic> run() {
+        check_room();
+        check_output();
+        check_observer();
+        for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
+        check_names();
+        check_geometry();
+        check_warnings();
+        return std::move(diagnostics_);
+    }
+
+private:
+    // Reporting: `path` names the value ("lights[0].position"); when the file
+    // did not give it (a default), point at the nearest enclosing table.
+    FileLoc where(std::string path) const {
+        while (!path.empty()) {
+            FileLoc location = scene_.location_of(path);
+            if (location.line > 0) return location;
+            // "objects[1].material.kd" → "objects[1].material" → "objects[1]" → "".
+            const std::size_t cut = path.back() == ']' ? path.rfind('[') : path.rfind('.');
+            path.resize(cut == std::string::npos ? 0 : cut);
+        }
+        return {};
+    }
+    void report(Severity severity, const std::string& path, const std::string& who,
+                const std::string& message) {
+        diagnostics_.push_back(
+            Diagnostic{where(path), severity, who.empty() ? message : who + ": " + message});
+    }
+    void error(const std::string& path, const std::string& who, const std::string& message) {
+        report(Severity::Error, path, who, message);
+    }
+
+    // Range helpers: "kd must be in [0, 1], found 1.5".
+    void at_least(float value, float low, bool inclusive, const std::string& path,
+                  const std::string& who, const std::string& key) {
+        const bool ok = inclusive ? value >= low : value > low;
+        if (!ok)
+            error(path, who,
+                  key + " must be " + (inclusive ? "≥ " : "> ") + number_text(low) + ", found " +
+                      number_text(value));
+    }
+    void in_range(float value, float low, float high, const std::string& path,
+                  const std::string& who, const std::string& key) {
+        if (!(value >= low && value <= high))
+            error(path, who,
+                  key + " must be in [" + number_text(low) + ", " + number_text(high) +
+                      "], found " + number_text(value));
+    }
+    void integer_in(int value, int low, int high, const std::string& path, const std::string& who,
+                    const std::string& key) {
+        if (value < low || value > high)
+            error(path, who,
+                  key + " must be " + std::to_string(low) + "–" + std::to_string(high) +
+                      ", found " + std::to_string(value));
+    }
+    void non_zero(const glm::vec3& v, const std::string& path, const std::string& who,
+                  const std::string& key) {
+        if (v.x == 0.0f && v.y == 0.0f && v.z == 0.0f)
+            error(path, who, key + " must not be the zero vector");
+    }
+
+    bool inside_room(const glm::vec3& p) const {
+        const Room& room = scene_.room;
+        const float slack = 1e-5f * std::max({room.width, room.height, room.depth});
+        return std::abs(p.x) <= room.width / 2 + slack && std::abs(p.y) <= room.height / 2 + slack &&
+               std::abs(p.z) <= room.depth / 2 + slack;
+    }
+    std::string room_text() const {
+        const Room& room = scene_.room;
+        return "the room (x in ±" + number_text(room.width / 2) + ", y in ±" +
+               number_text(room.height / 2) + ", z in ±" + number_text(room.depth / 2) + ")";
+    }
+
+    void check_room() {
+        const Room& room = scene_.room;
+        const std::size_t before = diagnostics_.size();
+        at_least(room.width, 0.0f, false, "room.width", "room", "width");
+        at_least(room.height, 0.0f, false, "room.height", "room", "height");
+        at_least(room.depth, 0.0f, false, "room.depth", "room", "depth");
+        room_ok_ = diagnostics_.size() == before;
+    }
+
+    void check_output() {
+        const OutputSettings& output = scene_.output;
+        integer_in(output.width, 1, 16384, "output.width", "output", "width");
+        integer_in(output.height, 1, 16384, "output.height", "output", "height");
+        at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
+    }
+
+    void check_observer() {
+        const Observer& o = scene_.observer;
+        const std::size_t before = diagnostics_.size();
+        if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
+            error("observer.fov", "observer",
+                  "fov must be in (0, 180) degrees, found " + number_text(o.fov_degrees));
+        at_least(o.near, 0.0f, false, "observer.near", "observer", "near");
+        if (!(o.far > o.near))
+            error("observer.far", "observer",
+                  "far (" + number_text(o.far) + ") must be greater than near (" +
+                      number_text(o.near) + ")");
+        const glm::vec3 view = o.look_at - o.position;
+        if (view == glm::vec3(0.0f)) {
+            error("observer.look_at", "observer",
+                  "look_at " + vector_text(o.look_at) + " is the observer's own position");
+        } else if (o.up == glm::vec3(0.0f)) {
+            error("observer.up", "observer", "up must not be the zero vector");
+        } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(o.up))) < 1e-6f) {
+            error("observer.up", "observer",
+                  "up " + vector_text(o.up) + " is parallel to the view direction " +
+                      vector_text(view));
+        }
+        observer_ok_ = diagnostics_.size() == before;
+        if (room_ok_ && !inside_room(o.position))
+            error("observer.position", "observer",
+                  "position " + vector_text(o.position) + " is outside " + room_text());
+    }
+
+    void check_light(std::size_t index) {
+        const SceneLight& scene_light = scene_.lights[index];
+        const Light& light = scene_light.light;
+        const std::string base = "lights[" + std::to_string(index) + "]";
+        const std::string who = subject("lights", index, scene_light.name);
+        at_least(light.intensity, 0.0f, true, base + ".intensity", who, "intensity");
+        auto check_attenuation = [&](const glm::vec3& k) {
+            const std::string path = base + ".attenuation";
+            if (k.x < 0.0f || k.y < 0.0f || k.z < 0.0f)
+                error(path, who, "attenuation coefficients must be ≥ 0, found " + vector_text(k));
+            else if (k == glm::vec3(0.0f))
+                error(path, who, "attenuation coefficients must not all be 0");
+        };
+        if (const auto* directional = std::get_if<DirectionalLight>(&light.kind)) {
+            non_zero(directional->direction, base + ".direction", who, "direction");
+        } else if (const auto* point = std::get_if<PointLight>(&light.kind)) {
+            check_attenuation(point->attenuation);
+        } else if (const auto* spot = std::get_if<SpotLight>(&light.kind)) {
+            check_attenuation(spot->attenuation);
+            non_zero(spot->direction, base + ".direction", who, "direction");
+            if (!(spot->cutoff_degrees > 0.0f && spot->cutoff_degrees <= 90.0f))
+                error(base + ".cutoff", who,
+                      "cutoff must be in (0, 90] degrees, found " +
+                          number_text(spot->cutoff_degrees));
+            at_least(spot->exponent, 0.0f, true, base + ".exponent", who, "exponent");
+        }
+        if (const glm::vec3* position = light_position(light)) {
+            if (room_ok_ && !inside_room(*position))
+                error(base + ".position", who,
+                      "position " + vector_text(*position) + " is outside " + room_text());
+            if (*position == scene_.observer.position)
+                error(base + ".position", who,
+                      "position " + vector_text(*position) + " is the observer's position");
+            for (std::size_t other = 0; other < index; ++other) {
+                const glm::vec3* earlier = light_position(scene_.lights[other].light);
+                if (earlier && *earlier == *position)
+                    error(base + ".position", who,
+                          "position " + vector_text(*position) + " is also the position of " +
+                              light_label(scene_.lights[other], other));
+            }
+        }
+    }
+
+    void check_object_values(std::size_t index) {
+        const SceneObject& object = scene_.objects[index];
+        const std::string base = "objects[" + std::to_string(index) + "]";
+        const std::string who = subject("objects", index, object.name);
+        const std::size_t before = diagnostics_.size();
+        at_least(object.scale, 0.0f, false, base + ".scale", who, "scale");
+        const Material& m = object.material;
+        in_range(m.ka, 0.0f, 1.0f, base + ".material.ka", who, "material.ka");
+        in_range(m.kd, 0.0f, 1.0f, base + ".material.kd", who, "material.kd");
+        in_range(m.ks, 0.0f, 1.0f, base + ".material.ks", who, "material.ks");
+        at_least(m.shininess, 0.0f, true, base + ".material.shininess", who, "material.shininess");
+
+        struct ShapeCheck {
+            Validator& v;
+            const std::string& base;
+            const std::string& who;
+            void positive(float value, const char* key) {
+                v.at_least(value, 0.0f, false, base + "." + key, who, key);
+            }
+            void operator()(const CubeShape& cube) { positive(cube.size, "size"); }
+            void operator()(const SphereShape& sphere) {
+                positive(sphere.radius, "radius");
+                v.integer_in(sphere.segments, 3, 4096, base + ".segments", who, "segments");
+                v.integer_in(sphere.rings, 2, 2048, base + ".rings", who, "rings");
+            }
+            void operator()(const TorusShape& torus) {
+                positive(torus.major_radius, "major_radius");
+                positive(torus.minor_radius, "minor_radius");
+                if (torus.minor_radius > 0.0f && !(torus.minor_radius < torus.major_radius))
+                    v.error(base + ".minor_radius", who,
+                            "minor_radius " + number_text(torus.minor_radius) +
+                                " must be below major_radius " + number_text(torus.major_radius));
+                v.integer_in(torus.segments, 3, 4096, base + ".segments", who, "segments");
+                v.integer_in(torus.sides, 3, 4096, base + ".sides", who, "sides");
+            }
+            void operator()(const TeapotShape& teapot) {
+                positive(teapot.size, "size");
+                v.integer_in(teapot.subdivisions, 1, 64, base + ".subdivisions", who,
+                             "subdivisions");
+            }
+            void operator()(const MeshFileShape&) {}
+        };
+        std::visit(ShapeCheck{*this, base, who}, object.shape);
+        shape_ok_.push_back(diagnostics_.size() == before);
+    }
+
+    void check_names() {
+        std::map<std::string, std::string> first_use;  // name → who used it first
+        auto claim = [&](const std::string& name, const std::string& path,
+                         const std::string& who) {
+            if (name.empty()) return;
+            auto [it, inserted] = first_use.emplace(name, who);
+            if (!inserted)
+                error(path + ".name", who, "name '" + name + "' is already used by " + it->second);
+        };
+        for (std::size_t i = 0; i < scene_.lights.size(); ++i)
+            claim(scene_.lights[i].name, "lights[" + std::to_string(i) + "]",
+                  subject("lights", i, ""));
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+            claim(scene_.objects[i].name, "objects[" + std::to_string(i) + "]",
+                  subject("objects", i, ""));
+    }
+
+    // World-space vertices of every object whose values passed (others are
+    // skipped: their meshes may be unbuildable or huge).
+    void build_hulls() {
+        hulls_.resize(scene_.objects.size());
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            if (!shape_ok_[i]) continue;
+            const SceneObject& object = scene_.objects[i];
+            Mesh mesh;
+            try {
+                mesh = object_mesh(object);
+            } catch (const IoError& failure) {
+                throw IoError(failure.path(), failure.reason(),
+                              where("objects[" + std::to_string(i) + "].file"));
+            }
+            const glm::mat4 model = object_to_world(object);
+            std::vector<glm::vec3>& hull = hulls_[i].emplace();
+            hull.reserve(mesh.positions.size());
+            for (const glm::vec3& p : mesh.positions)
+                hull.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
+        }
+    }
+
+    void check_geometry() {
+        build_hulls();
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            if (!hulls_[i]) continue;
+            const std::string base = "objects[" + std::to_string(i) + "]";
+            const std::string who = subject("objects", i, scene_.objects[i].name);
+            if (room_ok_) {
+                for (const glm::vec3& p : *hulls_[i]) {
+                    if (!inside_room(p)) {
+                        error(base + ".position", who,
+                              "object reaches outside " + room_text() + ", e.g. at " +
+                                  vector_text(p));
+                        break;
+                    }
+                }
+            }
+            for (std::size_t j = 0; j < i; ++j) {
+                if (hulls_[j] && hulls_intersect(*hulls_[i], *hulls_[j]))
+                    error(base + ".position", who,
+                          "overlaps " + object_label(scene_.objects[j], j));
+            }
+            if (observer_ok_ && hull_contains(*hulls_[i], scene_.observer.position))
+                error("observer.position", "observer",
+                      "position " + vector_text(scene_.observer.position) + " is inside " +
+                          object_label(scene_.objects[i], i));
+        }
+        for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
+            const glm::vec3* position = light_position(scene_.lights[l].light);
+            if (!position) continue;
+            for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+                if (hulls_[i] && hull_contains(*hulls_[i], *position))
+                    error("lights[" + std::to_string(l) + "].position",
+                          subject("lights", l, scene_.lights[l].name),
+                          "position " + vector_text(*position) + " is inside " +
+                              object_label(scene_.objects[i], i));
+            }
+        }
+    }
+
+    void check_warnings() {
+        if (scene_.lights.empty())
+            report(Severity::Warning, "", "", "the scene has no lights: every object will be black");
+        if (scene_.objects.empty())
+            report(Severity::Warning, "", "", "the scene has no objects: the image will be empty");
+        if (!observer_ok_) return;
+        // An object is surely out of view when all its vertices lie beyond
+        // one plane of the view frustum.
+        const Observer& o = scene_.observer;
+        const float aspect = static_cast<float>(scene_.output.width) /
+                             static_cast<float>(std::max(1, scene_.output.height));
+        if (!(aspect > 0.0f)) return;
+        const glm::mat4 view_projection =
+            glm::perspective(glm::radians(o.fov_degrees), aspect, o.near, o.far) *
+            glm::lookAt(o.position, o.look_at, o.up);
+        for (std::size_t i = 0; i < hulls_.size(); ++i) {
+            if (!hulls_[i] || hulls_[i]->empty()) continue;
+            bool outside[6] = {true, true, true, true, true, true};
+            for (const glm::vec3& p : *hulls_[i]) {
+                const glm::vec4 c = view_projection * glm::vec4(p, 1.0f);
+                const float distances[6] = {c.w + c.x, c.w - c.x, c.w + c.y,
+                                            c.w - c.y, c.w + c.z, c.w - c.z};
+                for (int k = 0; k < 6; ++k) outside[k] = outside[k] && distances[k] < 0.0f;
+            }
+            if (std::find(std::begin(outside), std::end(outside), true) != std::end(outside))
+                report(Severity::Warning, "objects[" + std::to_string(i) + "]",
+                       subject("objects", i, scene_.objects[i].name),
+                       "object is entirely outside the view");
+        }
+    }
+
+    const Scene& scene_;
+    std::vector<Diagnostic> diagnostics_;
+    bool room_ok_ = true;
+    bool observer_ok_ = true;
+    std::vector<bool> shape_ok_;
+    std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
+};
+
+}  // namespace
+
+std::vector<Diagnostic> validate_scene(const Scene& scene) { return Validator(scene).run(); }
+
+}  // namespace litkit
