@@ -29,8 +29,10 @@ std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
 }
 }  // namespace
 
-SceneError::SceneError(std::vector<Diagnostic> diagnostics)
-    : std::runtime_error(join_diagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+SceneError::SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings)
+    : std::runtime_error(join_diagnostics(diagnostics)),
+      diagnostics_(std::move(diagnostics)),
+      warnings_(std::move(warnings)) {}
 
 IoError::IoError(std::string path, std::string reason, FileLoc location, Access access)
     : std::runtime_error((location.line > 0 ? location.to_string() + ": " : std::string()) +

@@ -8,7 +8,7 @@
 // NaN and infinities, numbers that do not fit the C++ type they go into, and
 // colours (whose 0–255 range is part of their format). What it does not
 // check: ranges and geometry (room sizes > 0, inside-the-room, overlaps, …);
-// see the marked place in build_scene.
+// validate_scene (validate.hpp) does, from build_scene, on a well-formed scene.
 //
 // Required tables and keys (a decision SPEC §5 leaves open):
 //   [room] with width, height, depth   — required: the room bounds the scene
@@ -37,6 +37,8 @@
 #include <utility>
 
 #include "litkit/shapes.hpp"
+#include "litkit/validate.hpp"
+#include "validate_internal.hpp"
 
 namespace litkit {
 
@@ -107,7 +109,9 @@ std::optional<std::string_view> closest_word(std::string_view word,
     std::optional<std::string_view> prefix_match;
     int prefix_matches = 0;
     for (std::string_view candidate : candidates) {
-        if (folded.size() >= 3 && candidate.starts_with(folded)) {
+        // "blinn" → "blinn-phong", and "spotlight" → "spot".
+        if (folded.size() >= 3 && (candidate.starts_with(folded) ||
+                                   (candidate.size() >= 3 && folded.starts_with(candidate)))) {
             prefix_match = candidate;
             ++prefix_matches;
         }
@@ -134,6 +138,12 @@ bool contains(std::span<const std::string_view> words, std::string_view word) {
     return std::find(words.begin(), words.end(), word) != words.end();
 }
 
+// "a point light", "an ambient light", "an object type".
+std::string with_article(std::string_view noun) {
+    const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun[0]) != noun.npos;
+    return (vowel ? "an " : "a ") + std::string(noun);
+}
+
 // ---------------------------------------------------------------------------
 // Describing TOML values in messages.
 
@@ -152,8 +162,13 @@ std::string describe(const toml::node& node) {
             return "string";
         case toml::node_type::integer:
             return "integer " + std::to_string(node.as_integer()->get());
-        case toml::node_type::floating_point:
-            return "float " + number_text(node.as_floating_point()->get());
+        case toml::node_type::floating_point: {
+            // "float 1.0", not "float 1": the file wrote a float, and the
+            // message must not look as if it had found an integer.
+            std::string text = number_text(node.as_floating_point()->get());
+            if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
+            return "float " + text;
+        }
         case toml::node_type::boolean:
             return node.as_boolean()->get() ? "boolean true" : "boolean false";
         case toml::node_type::array: {
@@ -266,6 +281,7 @@ public:
     void read_file(const ParsedFile& file);
     void check_required_tables(std::span<const ParsedFile> files);
     std::vector<Diagnostic> take_diagnostics() { return std::move(diagnostics_); }
+    const BrokenEntities& broken_entities() const { return broken_; }
 
 private:
     // Reporting.
@@ -275,6 +291,9 @@ private:
     void error(const toml::source_region& where, const Site& site, const std::string& message) {
         std::string text = site.subject.empty() ? message : site.subject + ": " + message;
         diagnostics_.push_back(Diagnostic{location(where), Severity::Error, std::move(text)});
+        // The entity ("lights[0]", "observer"; "" for the file as a whole)
+        // now holds a default in place of a bad value.
+        broken_.insert(site.path.substr(0, site.path.find('.')));
     }
     std::string key_name(const Site& site, std::string_view key) const {
         return site.key_prefix + std::string(key);
@@ -334,6 +353,7 @@ private:
 
     Scene& scene_;
     std::vector<Diagnostic> diagnostics_;
+    BrokenEntities broken_;
     const ParsedFile* file_ = nullptr;
     std::map<std::string, FileLoc, std::less<>> defined_tables_;  // top-level table → where
 };
@@ -370,9 +390,9 @@ void SceneReader::check_family_keys(const Site& site, const Family& family, cons
             if (contains(t.keys, key.str())) owners.push_back(t.type);
         if (!owners.empty()) {
             error(key.source(), site,
-                  "key '" + std::string(key.str()) + "' does not belong to a " +
-                      std::string(type->type) + " " + std::string(family.noun) + " (only to: " +
-                      join(owners, ", ") + ")");
+                  "key '" + std::string(key.str()) + "' does not belong to " +
+                      with_article(type->type) + " " + std::string(family.noun) +
+                      " (only to: " + join(owners, ", ") + ")");
             continue;
         }
         error(key.source(), site,
@@ -528,7 +548,7 @@ std::optional<std::string_view> SceneReader::read_choice(const Site& site, std::
     for (std::string_view choice : choices)
         if (choice == text->get()) return choice;
     error(node->source(), site,
-          name + " \"" + text->get() + "\" is not a " + std::string(what) + " (one of " +
+          name + " \"" + text->get() + "\" is not " + with_article(what) + " (one of " +
               join(choices, ", ") + ")" + did_you_mean(text->get(), choices));
     return std::nullopt;
 }
@@ -596,9 +616,11 @@ void SceneReader::check_required_tables(std::span<const ParsedFile> files) {
         } else {
             std::vector<std::string_view> names;
             for (const ParsedFile& file : files) names.push_back(file.name);
-            message += " (in none of " + join(names, ", ") + ")";
+            message += names.empty() ? " (no scene files were given)"
+                                     : " (in none of " + join(names, ", ") + ")";
         }
         diagnostics_.push_back(Diagnostic{where, Severity::Error, message});
+        broken_.insert(std::string(key));
     }
 }
 
@@ -838,14 +860,17 @@ Scene build_scene(std::span<const ParsedFile> files) {
     reader.check_required_tables(files);
     std::vector<Diagnostic> diagnostics = reader.take_diagnostics();
 
-    // VALIDATION GOES HERE: the range and geometric checks of SPEC §6 (room
-    // sizes > 0, image size, fov, inside the room, overlaps, coefficient
-    // ranges, …) belong in a validator over the loaded Scene, pointing at
-    // values through scene.location_of("lights[0].position"). Run it only
-    // when `diagnostics` is empty: a scene with shape errors holds defaults
-    // in place of the bad values.
-
-    if (!diagnostics.empty()) throw SceneError(std::move(diagnostics));
+    // The value and geometry rules (validate.hpp) run too, so that one run
+    // reports every problem; entities with shape errors hold defaults in
+    // place of their bad values and are left out of the geometric checks.
+    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities())) {
+        if (diagnostic.severity == Severity::Warning)
+            scene.warnings.push_back(std::move(diagnostic));
+        else
+            diagnostics.push_back(std::move(diagnostic));
+    }
+    // A failed load still carries its warnings, for the caller to show.
+    if (!diagnostics.empty()) throw SceneError(std::move(diagnostics), std::move(scene.warnings));
     return scene;
 }
 
@@ -869,34 +894,62 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& sourc
 }
 
 std::string_view default_scene_toml() {
-    return R"toml(# litkit scene file: the built-in default scene (SPEC §7).
-# Draft.
+    return R"toml(# litkit scene: the built-in default scene.
+#
+# `litkit init` writes this file as a starting point; `litkit render` with no
+# scene draws it. Change a number, render again, and see what it does.
+# Coordinates: right-handed, +y is up, units are metres. Lines starting with
+# '#' are comments.
+
+# The room is a box centred at the origin: here x, y and z each run from -5
+# to 5. It is not drawn; everything in the scene must fit inside it.
 [room]
 width = 10
 height = 10
 depth = 10
 
+# The camera. It stands at `position` and looks at `look_at`; `fov` is the
+# vertical field of view in degrees. (Also possible: `up`, `near`, `far`.)
 [observer]
-position = [3, 1.5, 4.5]
-look_at = [0, -2, 0]
+position = [3.5, 1, 4]
+look_at = [-2, -3, -2]      # the centre of the cube
+fov = 30
 
+# How light is computed. Try the other models and compare:
+#   reflection: lambert | half-lambert | phong | blinn-phong
+#   shading:    flat | gouraud | phong
 [lighting]
 reflection = "phong"
 shading = "phong"
 
+# The picture: its size in pixels and the colour where no object is.
+[output]
+width = 800
+height = 600
+background = [25, 28, 36]   # colours are [red, green, blue], 0-255, or "#rrggbb"
+
+# One point light at the centre of the room. Its light fades with the square
+# of the distance, so it needs some intensity to reach the cube about 4 m away.
+# Other light types: ambient, directional, spot.
 [[lights]]
-name = "centre"
+name = "bulb"
 type = "point"
 position = [0, 0, 0]
-intensity = 3
+color = [255, 255, 255]
+intensity = 15
 
+# One cube, below and behind the light so that the three faces you see are lit.
+# `rotation` turns it about x, then y, then z (degrees). Other object types:
+# sphere, torus, teapot, and mesh (an OBJ file).
 [[objects]]
 name = "cube"
 type = "cube"
-size = 1.5
-position = [0, -2, 0]
+size = 2
+position = [-2, -3, -2]
 rotation = [0, 30, 0]
-material = { color = [200, 80, 60] }
+# ka: ambient, kd: diffuse (matte), ks: specular (shine), shininess: how
+# small and sharp the highlight is.
+material = { color = [200, 80, 60], ka = 0.1, kd = 0.7, ks = 0.5, shininess = 32 }
 )toml";
 }
 

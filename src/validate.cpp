@@ -16,6 +16,7 @@
 
 #include "litkit/convex.hpp"
 #include "litkit/shapes.hpp"
+#include "validate_internal.hpp"
 
 namespace litkit {
 
@@ -64,7 +65,7 @@ const glm::vec3* light_position(const Light& light) {
 
 class Validator {
 public:
-    explicit Validator(const Scene& scene) : scene_(scene) {}
+    Validator(const Scene& scene, const BrokenEntities& broken) : scene_(scene), broken_(broken) {}
 
     std::vector<Diagnostic> run() {
         check_room();
@@ -147,7 +148,14 @@ private:
         at_least(room.width, 0.0f, false, "room.width", "room", "width");
         at_least(room.height, 0.0f, false, "room.height", "room", "height");
         at_least(room.depth, 0.0f, false, "room.depth", "room", "depth");
-        room_ok_ = diagnostics_.size() == before;
+        room_ok_ = usable("room") && diagnostics_.size() == before;
+    }
+
+    // False for an entity that failed the loader's shape checks (it holds
+    // defaults in place of bad values), and for everything when the file as a
+    // whole had a problem such as a missing table.
+    bool usable(const std::string& entity) const {
+        return !broken_.contains("") && !broken_.contains(entity);
     }
 
     void check_output() {
@@ -168,6 +176,11 @@ private:
             error("observer.far", "observer",
                   "far (" + number_text(o.far) + ") must be greater than near (" +
                       number_text(o.near) + ")");
+        observer_position_ok_ = usable("observer");
+        if (!observer_position_ok_) {
+            observer_ok_ = false;
+            return;
+        }
         const glm::vec3 view = o.look_at - o.position;
         if (view == glm::vec3(0.0f)) {
             error("observer.look_at", "observer",
@@ -211,16 +224,17 @@ private:
                           number_text(spot->cutoff_degrees));
             at_least(spot->exponent, 0.0f, true, base + ".exponent", who, "exponent");
         }
-        if (const glm::vec3* position = light_position(light)) {
+        if (const glm::vec3* position = light_position(light); position && usable(base)) {
             if (room_ok_ && !inside_room(*position))
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is outside " + room_text());
-            if (*position == scene_.observer.position)
+            if (observer_position_ok_ && *position == scene_.observer.position)
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is the observer's position");
             for (std::size_t other = 0; other < index; ++other) {
                 const glm::vec3* earlier = light_position(scene_.lights[other].light);
-                if (earlier && *earlier == *position)
+                if (earlier && usable("lights[" + std::to_string(other) + "]") &&
+                    *earlier == *position)
                     error(base + ".position", who,
                           "position " + vector_text(*position) + " is also the position of " +
                               light_label(scene_.lights[other], other));
@@ -232,8 +246,11 @@ private:
         const SceneObject& object = scene_.objects[index];
         const std::string base = "objects[" + std::to_string(index) + "]";
         const std::string who = subject("objects", index, object.name);
-        const std::size_t before = diagnostics_.size();
+        // Only the scale and the shape's parameters decide whether the mesh
+        // can be built for the geometry checks; a bad material does not.
+        std::size_t before = diagnostics_.size();
         at_least(object.scale, 0.0f, false, base + ".scale", who, "scale");
+        bool geometry_ok = diagnostics_.size() == before;
         const Material& m = object.material;
         in_range(m.ka, 0.0f, 1.0f, base + ".material.ka", who, "material.ka");
         in_range(m.kd, 0.0f, 1.0f, base + ".material.kd", who, "material.kd");
@@ -256,7 +273,8 @@ private:
             void operator()(const TorusShape& torus) {
                 positive(torus.major_radius, "major_radius");
                 positive(torus.minor_radius, "minor_radius");
-                if (torus.minor_radius > 0.0f && !(torus.minor_radius < torus.major_radius))
+                if (torus.minor_radius > 0.0f && torus.major_radius > 0.0f &&
+                    !(torus.minor_radius < torus.major_radius))
                     v.error(base + ".minor_radius", who,
                             "minor_radius " + number_text(torus.minor_radius) +
                                 " must be below major_radius " + number_text(torus.major_radius));
@@ -270,8 +288,9 @@ private:
             }
             void operator()(const MeshFileShape&) {}
         };
+        before = diagnostics_.size();
         std::visit(ShapeCheck{*this, base, who}, object.shape);
-        shape_ok_.push_back(diagnostics_.size() == before);
+        shape_ok_.push_back(usable(base) && geometry_ok && diagnostics_.size() == before);
     }
 
     void check_names() {
@@ -302,7 +321,12 @@ private:
             try {
                 mesh = object_mesh(object);
             } catch (const IoError& failure) {
-                throw IoError(failure.path(), failure.reason(),
+                // Point at the scene's `file` key, and keep the line inside
+                // the mesh file where reading stopped.
+                std::string reason = failure.reason();
+                if (failure.location().line > 0)
+                    reason += " (line " + std::to_string(failure.location().line) + ")";
+                throw IoError(failure.path(), reason,
                               where("objects[" + std::to_string(i) + "].file"));
             }
             const glm::mat4 model = object_to_world(object);
@@ -334,14 +358,16 @@ private:
                     error(base + ".position", who,
                           "overlaps " + object_label(scene_.objects[j], j));
             }
-            if (observer_ok_ && hull_contains(*hulls_[i], scene_.observer.position))
+            // The position is usable even when fov, near, far, look_at or up
+            // are not (observer_ok_ only guards the view below).
+            if (observer_position_ok_ && hull_contains(*hulls_[i], scene_.observer.position))
                 error("observer.position", "observer",
                       "position " + vector_text(scene_.observer.position) + " is inside " +
                           object_label(scene_.objects[i], i));
         }
         for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
             const glm::vec3* position = light_position(scene_.lights[l].light);
-            if (!position) continue;
+            if (!position || !usable("lights[" + std::to_string(l) + "]")) continue;
             for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
                 if (hulls_[i] && hull_contains(*hulls_[i], *position))
                     error("lights[" + std::to_string(l) + "].position",
@@ -352,12 +378,26 @@ private:
         }
     }
 
+    // The file a scene-wide message belongs to: the scene's file when it has
+    // one (as the loader does for a missing table), none when it spans several.
+    FileLoc scene_file() const {
+        FileLoc location;
+        for (const auto& [path, value] : scene_.locations) {
+            if (location.file.empty()) location.file = value.file;
+            if (value.file != location.file) return {};
+        }
+        return location;
+    }
+
     void check_warnings() {
         if (scene_.lights.empty())
-            report(Severity::Warning, "", "", "the scene has no lights: every object will be black");
+            diagnostics_.push_back(Diagnostic{
+                scene_file(), Severity::Warning,
+                "the scene has no lights: every object will be black"});
         if (scene_.objects.empty())
-            report(Severity::Warning, "", "", "the scene has no objects: the image will be empty");
-        if (!observer_ok_) return;
+            diagnostics_.push_back(Diagnostic{scene_file(), Severity::Warning,
+                                              "the scene has no objects: the image will be empty"});
+        if (!observer_ok_ || !usable("output")) return;
         // An object is surely out of view when all its vertices lie beyond
         // one plane of the view frustum.
         const Observer& o = scene_.observer;
@@ -384,15 +424,21 @@ private:
     }
 
     const Scene& scene_;
+    const BrokenEntities& broken_;
     std::vector<Diagnostic> diagnostics_;
     bool room_ok_ = true;
-    bool observer_ok_ = true;
+    bool observer_ok_ = true;           // the whole view is usable
+    bool observer_position_ok_ = true;  // the position alone is usable
     std::vector<bool> shape_ok_;
     std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
 };
 
 }  // namespace
 
-std::vector<Diagnostic> validate_scene(const Scene& scene) { return Validator(scene).run(); }
+std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken) {
+    return Validator(scene, broken).run();
+}
+
+std::vector<Diagnostic> validate_scene(const Scene& scene) { return validate_scene(scene, {}); }
 
 }  // namespace litkit

@@ -100,6 +100,9 @@ protected:
 // Values and defaults
 
 TEST(SceneParse, EveryKeyParsesWithItsValue) {
+    // Absolute, so that it does not depend on the source name. The scene is
+    // a valid one: the validator runs on it too.
+    const std::string mesh_file = LITKIT_TEST_DATA "/obj/quad.obj";
     const Scene scene = parse_scene(R"(
 [room]
 width = 12
@@ -155,7 +158,7 @@ exponent = 4
 name = "box"
 type = "cube"
 size = 2
-position = [0, -3, 0]
+position = [0, -1, -5]
 rotation = [10, 30, 45]
 scale = 1.5
 material = { color = [200, 80, 60], ka = 0.2, kd = 0.6, ks = 0.3, shininess = 16 }
@@ -164,12 +167,14 @@ shading = "flat"
 
 [[objects]]
 type = "sphere"
+position = [4, 0, 0]
 radius = 0.5
 segments = 12
 rings = 6
 
 [[objects]]
 type = "torus"
+position = [-3, 2, 2]
 major_radius = 2
 minor_radius = 0.5
 segments = 10
@@ -177,12 +182,14 @@ sides = 8
 
 [[objects]]
 type = "teapot"
+position = [2.5, 0, 6.5]
 size = 3
 subdivisions = 4
 
 [[objects]]
 type = "mesh"
-file = "/models/bunny.obj"
+position = [4, 1, -6]
+file = ")" + mesh_file + R"("
 )",
                                     "scene.toml");
 
@@ -238,7 +245,7 @@ file = "/models/bunny.obj"
     const auto* cube = std::get_if<CubeShape>(&box.shape);
     ASSERT_NE(cube, nullptr);
     EXPECT_FLOAT_EQ(cube->size, 2.0f);
-    expect_vec3(box.position, {0, -3, 0});
+    expect_vec3(box.position, {0, -1, -5});
     expect_vec3(box.rotation_degrees, {10, 30, 45});
     EXPECT_FLOAT_EQ(box.scale, 1.5f);
     expect_vec3(box.material.color, {200 / 255.0f, 80 / 255.0f, 60 / 255.0f});
@@ -269,7 +276,7 @@ file = "/models/bunny.obj"
 
     const auto* mesh = std::get_if<MeshFileShape>(&scene.objects[4].shape);
     ASSERT_NE(mesh, nullptr);
-    EXPECT_EQ(mesh->file, fs::path("/models/bunny.obj"));
+    EXPECT_EQ(mesh->file, fs::path(mesh_file));
 }
 
 TEST(SceneParse, DefaultsApplyWhereKeysAreMissing) {
@@ -288,10 +295,13 @@ direction = [0, -1, 0]
 type = "cube"
 [[objects]]
 type = "sphere"
+position = [3, 0, 0]
 [[objects]]
 type = "torus"
+position = [-3, 0, 0]
 [[objects]]
 type = "teapot"
+position = [0, 0, -3]
 )"),
                                     "scene.toml");
 
@@ -392,11 +402,12 @@ TEST(SceneParse, RecordsTheLocationOfEveryValueRead) {
     // Line 7 is the first line after the required tables.
     const Scene scene = parse_scene(with_required_tables(R"([[lights]]
 type = "point"
-position = [0, 1, 0]
+position = [0, 3, 0]
 [[objects]]
 type = "cube"
 [[objects]]
 type = "sphere"
+position = [-3, 0, 0]
 material = { color = [1, 2, 3], kd = 0.5 }
 )"),
                                     "scene.toml");
@@ -414,8 +425,9 @@ material = { color = [1, 2, 3], kd = 0.5 }
     expect_at("lights[0].type", 8, 8);
     expect_at("lights[0].position", 9, 12);
     expect_at("objects[1]", 12, 1);
-    expect_at("objects[1].material", 14, 12);
-    expect_at("objects[1].material.kd", 14, 38);
+    expect_at("objects[1].position", 14, 12);
+    expect_at("objects[1].material", 15, 12);
+    expect_at("objects[1].material.kd", 15, 38);
 
     // Defaults have no place in the file.
     EXPECT_EQ(scene.location_of("observer.look_at").line, 0u);
@@ -434,11 +446,11 @@ TEST(SceneParse, RelativeMeshPathResolvesAgainstTheSourceFolder) {
     const Scene scene = parse_scene(with_required_tables(R"(
 [[objects]]
 type = "mesh"
-file = "models/thing.obj"
+file = "obj/quad.obj"
 )"),
-                                    "scenes/demo/scene.toml");
+                                    LITKIT_TEST_DATA "/scene.toml");
     EXPECT_EQ(std::get<MeshFileShape>(scene.objects[0].shape).file,
-              fs::path("scenes/demo/models/thing.obj"));
+              fs::path(LITKIT_TEST_DATA) / "obj" / "quad.obj");
 }
 
 // ---------------------------------------------------------------------------
@@ -728,6 +740,7 @@ direction = [0, -1, 0]
 [[objects]]
 name = "second"
 type = "sphere"
+position = [3, 0, 0]
 )");
     const std::vector<fs::path> files{first, second};
     const Scene scene = load_scene(files);
@@ -779,21 +792,26 @@ depth = 5
 }
 
 TEST_F(SceneFiles, RelativeMeshPathResolvesAgainstTheSceneFilesFolder) {
+    // A tetrahedron: the validator reads mesh files.
+    constexpr std::string_view tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                             "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    write("sub/models/thing.obj", tetrahedron);
+    const fs::path absolute = write("elsewhere/other.obj", tetrahedron);
     const fs::path scene_file = write("sub/scene.toml", with_required_tables(R"(
 [[objects]]
 type = "mesh"
 file = "models/thing.obj"
 [[objects]]
 type = "mesh"
-file = "/absolute/thing.obj"
+position = [-3, 0, 0]
+file = ")" + absolute.string() + R"("
 )"));
     const std::vector<fs::path> files{scene_file};
     const Scene scene = load_scene(files);
     ASSERT_EQ(scene.objects.size(), 2u);
     EXPECT_EQ(std::get<MeshFileShape>(scene.objects[0].shape).file,
               folder_ / "sub" / "models" / "thing.obj");
-    EXPECT_EQ(std::get<MeshFileShape>(scene.objects[1].shape).file,
-              fs::path("/absolute/thing.obj"));
+    EXPECT_EQ(std::get<MeshFileShape>(scene.objects[1].shape).file, absolute);
 }
 
 TEST_F(SceneFiles, MissingFileIsAnIoError) {
@@ -852,6 +870,46 @@ TEST(SceneParse, InvalidTomlTextIsAnIoError) {
     EXPECT_THROW(parse_scene("[room\n", "text.toml"), IoError);
 }
 
+// Found by fuzz/fuzz_scene.cpp: toml++ 3.3.0 reaches undefined behaviour
+// (an "unreachable" point in is_non_ascii_horizontal_whitespace) when it
+// meets most non-ASCII characters outside strings, down to the two bytes of
+// "é" (upstream marzer/tomlplusplus#190, #295). Debian's build of it rejects
+// them; these pin that such text stays a located IoError, as a typo like
+// "fov = 45°" must.
+TEST(SceneParse, NonAsciiOutsideStringsIsAnIoErrorWithItsPlace) {
+    struct Case {
+        std::string text;
+        std::uint32_t line;
+        std::uint32_t column;
+    };
+    const std::vector<Case> cases{
+        {"\xc3\xa9", 1, 1},                                        // é
+        {"caf\xc3\xa9 = 1\n", 1, 4},                               // a key café
+        {with_required_tables("fov = 45\xc2\xb0\n"), 7, 9},        // 45°
+        {with_required_tables("fov = 45 \xe3\x80\x80\n"), 7, 10},  // ideographic space
+    };
+    for (const Case& c : cases) {
+        try {
+            parse_scene(c.text, "scene.toml");
+            ADD_FAILURE() << "expected an IoError for: " << c.text;
+        } catch (const IoError& error) {
+            EXPECT_EQ(error.location().line, c.line) << error.what();
+            EXPECT_EQ(error.location().column, c.column) << error.what();
+        }
+    }
+}
+
+// The same toml++ path, in valid TOML: after a line-ending backslash in a
+// multi-line string, the next line may start with any character (§ here).
+TEST(SceneParse, NonAsciiAfterALineEndingBackslashStaysInTheString) {
+    const Scene scene =
+        parse_scene(with_required_tables(
+                        "[[lights]]\ntype = \"ambient\"\nname = \"\"\"\\\n  \xc2\xa7 1\"\"\"\n"),
+                    "scene.toml");
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].name, "\xc2\xa7 1");
+}
+
 // ---------------------------------------------------------------------------
 // Placement (SPEC §2)
 
@@ -905,6 +963,8 @@ TEST(DefaultScene, HasOneCubeOnePointLightAtTheCentreAndPhong) {
     expect_vec3(light->position, {0, 0, 0});
     EXPECT_EQ(scene.reflection, Reflection::Phong);
     EXPECT_EQ(scene.shading, Shading::Phong);
+    // A starting file draws something: no "outside the view" or similar.
+    EXPECT_TRUE(scene.warnings.empty());
 
     // The light must not be inside the cube: it is farther from the cube's
     // centre than the cube's corners are.

@@ -43,10 +43,18 @@ struct UsageError {
     std::string message;
 };
 
+void print_diagnostics(const std::vector<litkit::Diagnostic>& diagnostics) {
+    for (const litkit::Diagnostic& diagnostic : diagnostics)
+        std::cerr << diagnostic.to_string() << "\n";
+}
+
+// Loads the scene (or the built-in default) and shows its warnings.
 litkit::Scene load(const std::vector<std::string>& files) {
     if (files.empty()) return litkit::default_scene();
     std::vector<fs::path> paths(files.begin(), files.end());
-    return litkit::load_scene(paths);
+    litkit::Scene scene = litkit::load_scene(paths);
+    print_diagnostics(scene.warnings);
+    return scene;
 }
 
 // R11: when [lighting] leaves a model out, ask on a terminal; `--yes` answers
@@ -148,6 +156,9 @@ int main(int argc, char** argv) {
     CLI::App app{"litkit: renders a lit, shaded 3D scene from a scene file"};
     app.set_version_flag("--version", std::string("litkit ") + LITKIT_VERSION);
     app.require_subcommand(1);
+    // Lets `--version` (and any option of the top level) follow a command:
+    // `litkit render --version` works as SPEC §8 asks.
+    app.fallthrough();
 
     RenderArguments render_arguments;
     CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
@@ -192,8 +203,8 @@ int main(int argc, char** argv) {
         if (check->parsed()) return run_check(check_scenes);
         if (init->parsed()) return run_init(init_file, init_force);
     } catch (const litkit::SceneError& error) {
-        for (const litkit::Diagnostic& diagnostic : error.diagnostics())
-            std::cerr << diagnostic.to_string() << "\n";
+        print_diagnostics(error.diagnostics());
+        print_diagnostics(error.warnings());
         return exit_invalid;
     } catch (const litkit::IoError& error) {
         std::cerr << error.what() << "\n";

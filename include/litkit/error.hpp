@@ -36,11 +36,15 @@ struct Diagnostic {
 // rule. Holds every problem found, not just the first. CLI exit status 2.
 class SceneError : public std::runtime_error {
 public:
-    explicit SceneError(std::vector<Diagnostic> diagnostics);
+    // `warnings` are those found alongside the errors, kept apart so that
+    // diagnostics() holds exactly the errors.
+    explicit SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings = {});
     const std::vector<Diagnostic>& diagnostics() const noexcept { return diagnostics_; }
+    const std::vector<Diagnostic>& warnings() const noexcept { return warnings_; }
 
 private:
     std::vector<Diagnostic> diagnostics_;
+    std::vector<Diagnostic> warnings_;
 };
 
 // A file could not be read or written (missing, unreadable, not UTF-8, not

@@ -11,7 +11,9 @@
 namespace litkit {
 
 // Every problem of `scene`, errors and warnings, each located through
-// scene.locations, in the order room, output, observer, lights, objects.
+// scene.locations: first the values (room, output, observer, lights,
+// objects, names), then the geometry (objects against the room, each other
+// and the observer; lights inside objects), then the warnings.
 // Shape parameters are checked before any mesh is built, so a huge
 // `segments` is refused before it allocates. Mesh files are read to test
 // their geometry: one that cannot be read throws IoError located at its
