@@ -6,19 +6,28 @@
 #   scripts/install-deps.sh --fuzz   the same, plus clang and its sanitizer
 #                                    and libFuzzer runtimes (a few hundred MB),
 #                                    which only scripts/fuzz.sh needs
+#   scripts/install-deps.sh --bench  the same, plus headless OpenGL (EGL, Mesa's
+#                                    llvmpipe, libepoxy) and hyperfine, which
+#                                    only bench/compare.sh and its OpenGL peer
+#                                    program (bench/gl_peer) need
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev libtinyobjloader-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libxsimd-dev
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)
+# bench/gl_peer: EGL headless (surfaceless) on Mesa's llvmpipe, GL loaded
+# through libepoxy; bench/compare.sh times whole runs with hyperfine and reads
+# peak memory with GNU time.
+bench_packages=(libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev hyperfine time)
 
 case "${1:-}" in
   "") ;;
   --fuzz) packages+=("${fuzz_packages[@]}") ;;
-  *) echo "usage: $0 [--fuzz]" >&2; exit 2 ;;
+  --bench) packages+=("${bench_packages[@]}") ;;
+  *) echo "usage: $0 [--fuzz | --bench]" >&2; exit 2 ;;
 esac
 
 missing=()

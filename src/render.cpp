@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "litkit/equations.hpp"
+#include "shade_kernel.hpp"
 #include "thread_pool.hpp"
 
 namespace litkit {
@@ -44,18 +45,9 @@ struct ClipVertex {
     std::array<float, max_varyings> varyings;
 };
 
-// A triangle ready to rasterize: fixed-point window coordinates, 1/w and
-// varyings per vertex, ordered so that its doubled area is positive.
+// Window coordinates are fixed point with this many bits below the pixel.
 constexpr int subpixel_bits = 8;
 constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
-struct RasterTriangle {
-    std::array<std::int64_t, 3> x, y;
-    std::array<float, 3> inverse_w;
-    std::array<std::array<float, max_varyings>, 3> varyings;
-    glm::vec3 flat_color;  // flat shading: the one colour of the whole triangle
-    std::uint32_t object;
-    int min_x, max_x, min_y, max_y;  // pixel bounds, inclusive, inside the image
-};
 
 // An object's geometry in world space, built once per Renderer ("uploaded").
 struct PreparedObject {
@@ -64,6 +56,7 @@ struct PreparedObject {
     std::vector<glm::vec3> face_normals;  // DD8, world space, per triangle
     std::vector<std::array<std::uint32_t, 3>> triangles;
     equations::MaterialT<float> material;
+    Material raw_material;
     Reflection reflection;
     Shading shading;
 };
@@ -137,18 +130,54 @@ glm::vec3 light_with(Reflection reflection, std::span<const PreparedLight> light
     return {};
 }
 
-// Colour of one pixel value per channel for each intensity (SPEC §4). Gamma 1
-// skips pow entirely.
-struct PixelEncoder {
-    float gamma;
-    void operator()(const glm::vec3& intensity, std::uint8_t* out) const {
-        out[0] = to_pixel(intensity.x, gamma);
-        out[1] = to_pixel(intensity.y, gamma);
-        out[2] = to_pixel(intensity.z, gamma);
-    }
+constexpr int band_height = 16;
+constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
+
+// Nearest integer, halves up; |v| stays far below 2^31 thanks to the guard
+// band. (std::llround is a library call; this is two instructions.)
+std::int32_t round_to_int(double v) {
+    const double shifted = v + 0.5;
+    auto truncated = static_cast<std::int32_t>(shifted);
+    return truncated - (shifted < static_cast<double>(truncated) ? 1 : 0);
+}
+
+// Varyings of the corners of a piece of a clipped triangle.
+using CornerVaryings = std::array<std::array<float, max_varyings>, 3>;
+
+// A triangle ready to rasterize: fixed-point window coordinates and 1/w per
+// corner, ordered so that its doubled area is positive, and where its
+// varyings come from (the mesh's vertices, or a clipped polygon's own).
+struct RasterTriangle {
+    std::array<std::int32_t, 3> x, y;
+    std::array<float, 3> inverse_w;
+    std::uint32_t object;
+    std::uint32_t source;                   // triangle index within the object
+    std::array<std::uint32_t, 3> vertex;    // mesh vertices, corner by corner
+    std::int32_t clipped;                   // index into SetupChunk::clipped, or −1
+    const CornerVaryings* varyings;         // &SetupChunk::clipped[clipped], or null
+    std::int32_t min_x, max_x, min_y, max_y;  // pixel bounds, inclusive, inside the image
 };
 
-constexpr int band_height = 16;
+// One setup job's output, kept between frames to reuse its memory.
+struct SetupChunk {
+    std::uint32_t object = 0;
+    std::size_t begin = 0, end = 0;  // triangle range within the object
+    std::vector<RasterTriangle> triangles;
+    std::vector<CornerVaryings> clipped;
+    std::vector<std::vector<std::uint32_t>> bands;  // indices into `triangles`, per band
+};
+
+// Per-thread scratch for one band: the visibility buffer (nearest triangle
+// and its perspective-correct weights per pixel) and one row of colours.
+struct BandScratch {
+    std::vector<float> depth;                    // 1/w; 0 = nothing drawn
+    std::vector<const RasterTriangle*> visible;  // nullptr = background
+    std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
+    std::vector<float> r, g, b;                  // one row of intensities
+    std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
+    std::vector<int> run_x;                      // their pixel columns
+    std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
+};
 
 }  // namespace
 
@@ -156,21 +185,25 @@ struct Renderer::Impl {
     Scene scene;
     RenderOptions options;
     ThreadPool pool;
+    const kernels::Kernels& kernels = kernels::select_kernels();
     std::vector<PreparedLight> lights;
     std::vector<PreparedObject> objects;
-    glm::mat4 view_projection{1.0f};
 
-    // Per-frame scratch, kept between frames to avoid reallocating.
-    std::vector<RasterTriangle> triangles;
-    std::vector<std::vector<std::uint32_t>> bands;  // triangle indices per band
-    std::vector<float> depth;                       // 1/w per pixel; 0 = nothing yet
-    std::vector<std::vector<glm::vec3>> vertex_colors;  // Gouraud, per object
+    // Per-frame state, kept between frames to avoid reallocating.
+    std::vector<std::vector<glm::vec4>> clip_positions;  // per object, per vertex
+    std::vector<std::vector<glm::vec3>> vertex_colors;   // Gouraud, per object
+    std::vector<std::vector<glm::vec3>> flat_colors;     // flat, per object, per triangle
+    std::vector<SetupChunk> chunks;
+    std::vector<BandScratch> scratch;  // one per thread
+    int band_count = 0;
 
     Impl(const Scene& s, RenderOptions o) : scene(s), options(o), pool(o.threads) {}
 
     void prepare();
-    void vertex_and_setup(int width, int height);
-    void rasterize_band(int band, Image& image) const;
+    void vertex_stage(int width, int height);
+    void setup(SetupChunk& chunk, int width, int height);
+    void rasterize_band(int band, BandScratch& scratch, Image& image) const;
+    void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
 };
 
 void Renderer::Impl::prepare() {
@@ -201,222 +234,402 @@ void Renderer::Impl::prepare() {
                 prepared.positions[t[0]], prepared.positions[t[1]], prepared.positions[t[2]]));
         }
         prepared.material = equations::splat<float>(object.material);
+        prepared.raw_material = object.material;
         prepared.reflection = object.reflection.value_or(scene_reflection);
         prepared.shading = object.shading.value_or(scene_shading);
         objects.push_back(std::move(prepared));
     }
+
+    // Setup jobs: fixed triangle ranges, so their output buffers are reused.
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const std::size_t count = objects[o].triangles.size();
+        for (std::size_t begin = 0; begin < count; begin += setup_chunk) {
+            SetupChunk chunk;
+            chunk.object = static_cast<std::uint32_t>(o);
+            chunk.begin = begin;
+            chunk.end = std::min(count, begin + setup_chunk);
+            chunks.push_back(std::move(chunk));
+        }
+    }
+    clip_positions.resize(objects.size());
+    vertex_colors.resize(objects.size());
+    flat_colors.resize(objects.size());
+    scratch.resize(static_cast<std::size_t>(pool.size()));
 }
 
-void Renderer::Impl::vertex_and_setup(int width, int height) {
+// Vertex stage: every vertex to clip space once; Gouraud objects lit per
+// vertex, flat objects per triangle (at the centroid, with the face normal).
+void Renderer::Impl::vertex_stage(int width, int height) {
     const Observer& observer = scene.observer;
     const glm::vec3 eye = observer.position;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const glm::mat4 view = glm::lookAt(observer.position, observer.look_at, observer.up);
-    const glm::mat4 projection =
-        glm::perspective(glm::radians(observer.fov_degrees), aspect, observer.near, observer.far);
-    view_projection = projection * view;
+    const glm::mat4 view_projection =
+        glm::perspective(glm::radians(observer.fov_degrees), aspect, observer.near, observer.far) *
+        glm::lookAt(observer.position, observer.look_at, observer.up);
 
-    // Vertex stage, Gouraud part: lighting at every vertex of Gouraud objects.
-    vertex_colors.resize(objects.size());
+    constexpr std::size_t chunk = 4096;
     for (std::size_t o = 0; o < objects.size(); ++o) {
         const PreparedObject& object = objects[o];
-        if (object.shading != Shading::Gouraud) continue;
+        std::vector<glm::vec4>& clip = clip_positions[o];
+        clip.resize(object.positions.size());
         std::vector<glm::vec3>& colors = vertex_colors[o];
-        colors.resize(object.positions.size());
-        constexpr std::size_t chunk = 4096;
-        pool.parallel_for((colors.size() + chunk - 1) / chunk, [&](std::size_t c) {
-            std::size_t end = std::min(colors.size(), (c + 1) * chunk);
-            for (std::size_t i = c * chunk; i < end; ++i)
-                colors[i] = light_with(object.reflection, lights, object.material,
-                                       object.positions[i], object.normals[i], eye);
+        if (object.shading == Shading::Gouraud) colors.resize(object.positions.size());
+        pool.parallel_for((clip.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
+            const std::size_t end = std::min(clip.size(), (c + 1) * chunk);
+            for (std::size_t i = c * chunk; i < end; ++i) {
+                clip[i] = view_projection * glm::vec4(object.positions[i], 1.0f);
+                if (object.shading == Shading::Gouraud)
+                    colors[i] = light_with(object.reflection, lights, object.material,
+                                           object.positions[i], object.normals[i], eye);
+            }
         });
-    }
-
-    // Vertex, clip and setup stages, triangle by triangle.
-    triangles.clear();
-    const float half_width = 0.5f * static_cast<float>(width);
-    const float half_height = 0.5f * static_cast<float>(height);
-    for (std::size_t o = 0; o < objects.size(); ++o) {
-        const PreparedObject& object = objects[o];
-        const int varying_count = object.shading == Shading::Phong ? 6 : 3;
-        for (std::size_t t = 0; t < object.triangles.size(); ++t) {
-            const auto& indices = object.triangles[t];
-            glm::vec3 flat_color{0.0f};
-            if (object.shading == Shading::Flat) {
-                const glm::vec3 centroid = (object.positions[indices[0]] +
-                                            object.positions[indices[1]] +
-                                            object.positions[indices[2]]) /
-                                           3.0f;
-                flat_color = light_with(object.reflection, lights, object.material, centroid,
-                                        object.face_normals[t], eye);
-            }
-            std::array<ClipVertex, 3> corners;
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t v = indices[k];
-                corners[k].clip = view_projection * glm::vec4(object.positions[v], 1.0f);
-                corners[k].varyings.fill(0.0f);
-                if (object.shading == Shading::Phong) {
-                    const glm::vec3& p = object.positions[v];
-                    const glm::vec3& n = object.normals[v];
-                    corners[k].varyings = {p.x, p.y, p.z, n.x, n.y, n.z};
-                } else if (object.shading == Shading::Gouraud) {
-                    const glm::vec3& c = vertex_colors[o][v];
-                    corners[k].varyings[0] = c.x;
-                    corners[k].varyings[1] = c.y;
-                    corners[k].varyings[2] = c.z;
+        if (object.shading == Shading::Flat) {
+            std::vector<glm::vec3>& flat = flat_colors[o];
+            flat.resize(object.triangles.size());
+            pool.parallel_for((flat.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
+                const std::size_t end = std::min(flat.size(), (c + 1) * chunk);
+                for (std::size_t t = c * chunk; t < end; ++t) {
+                    const auto& v = object.triangles[t];
+                    const glm::vec3 centroid =
+                        (object.positions[v[0]] + object.positions[v[1]] + object.positions[v[2]]) /
+                        3.0f;
+                    flat[t] = light_with(object.reflection, lights, object.material, centroid,
+                                         object.face_normals[t], eye);
                 }
-            }
-            std::array<ClipVertex, 9> polygon;
-            const int count = clip_triangle(corners, varying_count, polygon);
-            // Fan the clipped polygon; every piece keeps the triangle's winding.
-            for (int k = 1; k + 1 < count; ++k) {
-                const ClipVertex* piece[3] = {&polygon[0], &polygon[k], &polygon[k + 1]};
-                RasterTriangle raster;
-                for (int m = 0; m < 3; ++m) {
-                    const glm::vec4& c = piece[m]->clip;
-                    const float inverse_w = 1.0f / c.w;
-                    // Viewport: NDC x → [0, W] left to right, NDC y → [0, H] top to bottom.
-                    const double window_x = (c.x * inverse_w + 1.0f) * half_width;
-                    const double window_y = (1.0f - c.y * inverse_w) * half_height;
-                    raster.x[m] = std::llround(window_x * static_cast<double>(subpixel_one));
-                    raster.y[m] = std::llround(window_y * static_cast<double>(subpixel_one));
-                    raster.inverse_w[m] = inverse_w;
-                    raster.varyings[m] = piece[m]->varyings;
-                }
-                // Doubled signed area in y-down window coordinates: a triangle
-                // counter-clockwise on screen (front-facing) has a negative one.
-                const std::int64_t area = (raster.x[1] - raster.x[0]) * (raster.y[2] - raster.y[0]) -
-                                          (raster.y[1] - raster.y[0]) * (raster.x[2] - raster.x[0]);
-                if (area >= 0) continue;  // back face or zero area: culled
-                std::swap(raster.x[1], raster.x[2]);
-                std::swap(raster.y[1], raster.y[2]);
-                std::swap(raster.inverse_w[1], raster.inverse_w[2]);
-                std::swap(raster.varyings[1], raster.varyings[2]);
-
-                // Pixel bounds: pixel i covers centres at i + 0.5.
-                auto first_pixel = [](std::int64_t lo) {
-                    return static_cast<int>((lo - subpixel_one / 2 + subpixel_one - 1) >> subpixel_bits);
-                };
-                auto last_pixel = [](std::int64_t hi) {
-                    return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits);
-                };
-                const auto [min_x, max_x] = std::minmax({raster.x[0], raster.x[1], raster.x[2]});
-                const auto [min_y, max_y] = std::minmax({raster.y[0], raster.y[1], raster.y[2]});
-                raster.min_x = std::max(0, first_pixel(min_x));
-                raster.max_x = std::min(width - 1, last_pixel(max_x));
-                raster.min_y = std::max(0, first_pixel(min_y));
-                raster.max_y = std::min(height - 1, last_pixel(max_y));
-                if (raster.min_x > raster.max_x || raster.min_y > raster.max_y) continue;
-                raster.flat_color = flat_color;
-                raster.object = static_cast<std::uint32_t>(o);
-                triangles.push_back(raster);
-            }
+            });
         }
-    }
-
-    // Binning: each band of rows lists the triangles that may touch it.
-    const int band_count = (height + band_height - 1) / band_height;
-    bands.resize(static_cast<std::size_t>(band_count));
-    for (auto& band : bands) band.clear();
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        const int first = triangles[t].min_y / band_height;
-        const int last = triangles[t].max_y / band_height;
-        for (int b = first; b <= last; ++b) bands[b].push_back(static_cast<std::uint32_t>(t));
     }
 }
 
-void Renderer::Impl::rasterize_band(int band, Image& image) const {
-    const int width = image.width;
-    const int row_begin = band * band_height;
-    const int row_end = std::min(image.height, row_begin + band_height);
-    const glm::vec3 eye = scene.observer.position;
-    const PixelEncoder encode{scene.output.gamma};
-    float* const depth_rows = const_cast<float*>(depth.data());
+// Clip and setup stages for one range of triangles, then binning to bands.
+void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
+    const PreparedObject& object = objects[chunk.object];
+    const std::vector<glm::vec4>& clip = clip_positions[chunk.object];
+    const int varying_count = object.shading == Shading::Phong     ? 6
+                              : object.shading == Shading::Gouraud ? 3
+                                                                   : 0;
+    const float half_width = 0.5f * static_cast<float>(width);
+    const float half_height = 0.5f * static_cast<float>(height);
+    chunk.triangles.clear();
+    chunk.clipped.clear();
 
-    // Clear the band: background colour as given (no gamma), depth "nothing".
-    for (int y = row_begin; y < row_end; ++y) {
-        for (int x = 0; x < width; ++x) {
-            std::uint8_t* p = image.pixel(x, y);
-            p[0] = scene.output.background[0];
-            p[1] = scene.output.background[1];
-            p[2] = scene.output.background[2];
-            depth_rows[static_cast<std::size_t>(y) * width + x] = 0.0f;
+    // Viewport and setup of one (piece of a) triangle; false when culled.
+    auto emit = [&](const std::array<glm::vec4, 3>& corners, std::uint32_t source,
+                    const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
+        RasterTriangle raster;
+        for (int m = 0; m < 3; ++m) {
+            const glm::vec4& c = corners[m];
+            const float inverse_w = 1.0f / c.w;
+            // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
+            const double window_x = (c.x * inverse_w + 1.0f) * half_width;
+            const double window_y = (1.0f - c.y * inverse_w) * half_height;
+            raster.x[m] = round_to_int(window_x * subpixel_one);
+            raster.y[m] = round_to_int(window_y * subpixel_one);
+            raster.inverse_w[m] = inverse_w;
+        }
+        // Doubled signed area in y-down window coordinates: a triangle
+        // counter-clockwise on screen (front-facing) has a negative one.
+        const std::int64_t area =
+            std::int64_t{raster.x[1] - raster.x[0]} * (raster.y[2] - raster.y[0]) -
+            std::int64_t{raster.y[1] - raster.y[0]} * (raster.x[2] - raster.x[0]);
+        if (area >= 0) return;  // back face or zero area: culled
+        std::swap(raster.x[1], raster.x[2]);
+        std::swap(raster.y[1], raster.y[2]);
+        std::swap(raster.inverse_w[1], raster.inverse_w[2]);
+        raster.vertex = {vertex[0], vertex[2], vertex[1]};
+
+        // Pixel i covers the centre i + 0.5.
+        auto first_pixel = [](std::int64_t lo) {
+            return static_cast<int>((lo - subpixel_one / 2 + subpixel_one - 1) >> subpixel_bits);
+        };
+        auto last_pixel = [](std::int64_t hi) {
+            return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits);
+        };
+        const auto [min_x, max_x] = std::minmax({raster.x[0], raster.x[1], raster.x[2]});
+        const auto [min_y, max_y] = std::minmax({raster.y[0], raster.y[1], raster.y[2]});
+        raster.min_x = std::max(0, first_pixel(min_x));
+        raster.max_x = std::min(width - 1, last_pixel(max_x));
+        raster.min_y = std::max(0, first_pixel(min_y));
+        raster.max_y = std::min(height - 1, last_pixel(max_y));
+        if (raster.min_x > raster.max_x || raster.min_y > raster.max_y) return;
+        raster.object = chunk.object;
+        raster.source = source;
+        raster.clipped = -1;
+        if (varyings) {
+            raster.clipped = static_cast<std::int32_t>(chunk.clipped.size());
+            chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
+        }
+        chunk.triangles.push_back(raster);
+    };
+
+    for (std::size_t t = chunk.begin; t < chunk.end; ++t) {
+        const auto& indices = object.triangles[t];
+        const std::array<glm::vec4, 3> corners = {clip[indices[0]], clip[indices[1]],
+                                                  clip[indices[2]]};
+        // Trivial accept and reject against the six clip planes.
+        bool all_inside = true, rejected = false;
+        for (int plane = 0; plane < 6 && !rejected; ++plane) {
+            int outside = 0;
+            for (const glm::vec4& c : corners) outside += plane_distances(c)[plane] < 0.0f;
+            rejected = outside == 3;
+            all_inside = all_inside && outside == 0;
+        }
+        if (rejected) continue;
+        const std::uint32_t source = static_cast<std::uint32_t>(t);
+        if (all_inside) {
+            emit(corners, source, indices, nullptr);
+            continue;
+        }
+        // Clipping: the pieces carry their own varyings, interpolated in
+        // clip space.
+        std::array<ClipVertex, 3> input;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = indices[k];
+            input[k].clip = corners[k];
+            input[k].varyings.fill(0.0f);
+            if (object.shading == Shading::Phong) {
+                const glm::vec3& p = object.positions[v];
+                const glm::vec3& n = object.normals[v];
+                input[k].varyings = {p.x, p.y, p.z, n.x, n.y, n.z};
+            } else if (object.shading == Shading::Gouraud) {
+                const glm::vec3& c = vertex_colors[chunk.object][v];
+                input[k].varyings = {c.x, c.y, c.z, 0.0f, 0.0f, 0.0f};
+            }
+        }
+        std::array<ClipVertex, 9> polygon;
+        const int count = clip_triangle(input, varying_count, polygon);
+        for (int k = 1; k + 1 < count; ++k) {  // a fan keeps the winding
+            const ClipVertex* piece[3] = {&polygon[0], &polygon[k], &polygon[k + 1]};
+            CornerVaryings varyings;
+            for (int m = 0; m < 3; ++m) varyings[m] = piece[m]->varyings;
+            emit({piece[0]->clip, piece[1]->clip, piece[2]->clip}, source, indices, &varyings);
         }
     }
 
-    for (std::uint32_t index : bands[band]) {
-        const RasterTriangle& tri = triangles[index];
-        const PreparedObject& object = objects[tri.object];
-        const int y0 = std::max(tri.min_y, row_begin);
-        const int y1 = std::min(tri.max_y, row_end - 1);
-        if (y0 > y1) continue;
+    // The clipped pieces' varyings stay put from here on: link them.
+    for (RasterTriangle& tri : chunk.triangles)
+        tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
 
-        // Edge k is opposite vertex k: from vertex k+1 to vertex k+2.
-        // E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) ≥ 0 inside.
-        std::array<std::int64_t, 3> step_x, step_y, origin;
-        std::array<std::int64_t, 3> bias;
-        const std::int64_t start_x = std::int64_t{tri.min_x} * subpixel_one + subpixel_one / 2;
-        const std::int64_t start_y = std::int64_t{y0} * subpixel_one + subpixel_one / 2;
-        for (int k = 0; k < 3; ++k) {
-            const int a = (k + 1) % 3;
-            const int b = (k + 2) % 3;
-            const std::int64_t dx = tri.x[b] - tri.x[a];
-            const std::int64_t dy = tri.y[b] - tri.y[a];
-            step_x[k] = -dy * subpixel_one;
-            step_y[k] = dx * subpixel_one;
-            origin[k] = dx * (start_y - tri.y[a]) - dy * (start_x - tri.x[a]);
-            // Top-left fill rule (in this winding): a pixel centre exactly on a
-            // top or left edge belongs to the triangle, on others it does not.
-            const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-            bias[k] = top_left ? 0 : -1;
-        }
-        const std::int64_t doubled_area =
-            (tri.x[1] - tri.x[0]) * (tri.y[2] - tri.y[0]) - (tri.y[1] - tri.y[0]) * (tri.x[2] - tri.x[0]);
-        const float inverse_area = 1.0f / static_cast<float>(doubled_area);
+    // Binning: each band of rows lists the triangles that may touch it.
+    chunk.bands.resize(static_cast<std::size_t>(band_count));
+    for (auto& band : chunk.bands) band.clear();
+    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
+        const RasterTriangle& tri = chunk.triangles[i];
+        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
+            chunk.bands[b].push_back(static_cast<std::uint32_t>(i));
+    }
+}
 
-        for (int y = y0; y <= y1; ++y) {
-            const std::int64_t row_offset = std::int64_t{y - y0};
-            std::array<std::int64_t, 3> e;
-            for (int k = 0; k < 3; ++k) e[k] = origin[k] + row_offset * step_y[k];
-            float* depth_row = depth_rows + static_cast<std::size_t>(y) * width;
-            for (int x = tri.min_x; x <= tri.max_x;
-                 ++x, e[0] += step_x[0], e[1] += step_x[1], e[2] += step_x[2]) {
-                if ((e[0] + bias[0]) < 0 || (e[1] + bias[1]) < 0 || (e[2] + bias[2]) < 0) continue;
-                // Screen-space barycentrics, then perspective-correct weights.
-                const float b0 = static_cast<float>(e[0]) * inverse_area;
-                const float b1 = static_cast<float>(e[1]) * inverse_area;
-                const float b2 = static_cast<float>(e[2]) * inverse_area;
-                const float p0 = b0 * tri.inverse_w[0];
-                const float p1 = b1 * tri.inverse_w[1];
-                const float p2 = b2 * tri.inverse_w[2];
-                const float inverse_w = p0 + p1 + p2;  // 1 / view depth, linear on screen
-                // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
-                if (inverse_w <= depth_row[x]) continue;
-                depth_row[x] = inverse_w;
+// Rasterize stage for one band: the visibility buffer holds, per pixel, the
+// nearest triangle and its perspective-correct weights; then shade row by row.
+void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) const {
+    const int width = image.width;
+    const int row_begin = band * band_height;
+    const int row_end = std::min(image.height, row_begin + band_height);
+    const std::size_t pixels = static_cast<std::size_t>(row_end - row_begin) * width;
+    // The buffers arrive cleared (depth 0, nothing visible): shade_row clears
+    // what it used, so a band costs only the pixels its triangles touch.
+    if (s.depth.size() < pixels) {
+        s.depth.assign(pixels, 0.0f);
+        s.visible.assign(pixels, nullptr);
+        s.weight1.resize(pixels);
+        s.weight2.resize(pixels);
+    }
+    s.touched_begin.assign(band_height, width);
+    s.touched_end.assign(band_height, 0);
 
-                glm::vec3 color;
-                if (object.shading == Shading::Flat) {
-                    color = tri.flat_color;
-                } else {
-                    const float w = 1.0f / inverse_w;
-                    const float q0 = p0 * w, q1 = p1 * w, q2 = p2 * w;
-                    auto varying = [&](int k) {
-                        return q0 * tri.varyings[0][k] + q1 * tri.varyings[1][k] +
-                               q2 * tri.varyings[2][k];
-                    };
-                    if (object.shading == Shading::Gouraud) {
-                        color = {varying(0), varying(1), varying(2)};
-                    } else {
-                        const glm::vec3 position{varying(0), varying(1), varying(2)};
-                        const glm::vec3 normal =
-                            glm::normalize(glm::vec3{varying(3), varying(4), varying(5)});
-                        color = light_with(object.reflection, lights, object.material, position,
-                                           normal, eye);
+    for (const SetupChunk& chunk : chunks) {
+        for (std::uint32_t index : chunk.bands[band]) {
+            const RasterTriangle& tri = chunk.triangles[index];
+            const int y0 = std::max(tri.min_y, row_begin);
+            const int y1 = std::min(tri.max_y, row_end - 1);
+            if (y0 > y1) continue;
+
+            // Edge k is opposite corner k: from corner k+1 to corner k+2.
+            // E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) ≥ 0 inside.
+            std::array<std::int64_t, 3> step_x, step_y, origin, bias;
+            const std::int64_t start_x = std::int64_t{tri.min_x} * subpixel_one + subpixel_one / 2;
+            const std::int64_t start_y = std::int64_t{y0} * subpixel_one + subpixel_one / 2;
+            for (int k = 0; k < 3; ++k) {
+                const int a = (k + 1) % 3;
+                const int b = (k + 2) % 3;
+                const std::int64_t dx = tri.x[b] - tri.x[a];
+                const std::int64_t dy = tri.y[b] - tri.y[a];
+                step_x[k] = -dy * subpixel_one;
+                step_y[k] = dx * subpixel_one;
+                origin[k] = dx * (start_y - tri.y[a]) - dy * (start_x - tri.x[a]);
+                // Top-left fill rule (in this winding): a pixel centre exactly
+                // on a top or left edge belongs to the triangle, on others not.
+                const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+                bias[k] = top_left ? 0 : -1;
+            }
+            const std::int64_t doubled_area =
+                std::int64_t{tri.x[1] - tri.x[0]} * (tri.y[2] - tri.y[0]) -
+                std::int64_t{tri.y[1] - tri.y[0]} * (tri.x[2] - tri.x[0]);
+            const float inverse_area = 1.0f / static_cast<float>(doubled_area);
+            const float weight0 = inverse_area * tri.inverse_w[0];
+            const float weight1 = inverse_area * tri.inverse_w[1];
+            const float weight2 = inverse_area * tri.inverse_w[2];
+
+            for (int y = y0; y <= y1; ++y) {
+                const std::int64_t rows = y - y0;
+                std::array<std::int64_t, 3> e;
+                for (int k = 0; k < 3; ++k) e[k] = origin[k] + rows * step_y[k] + bias[k];
+                // The covered span of this row, solved exactly from the edge
+                // functions (each is linear in x): the pixels whose
+                // e_k + step_x·(x − min_x) ≥ 0 for all k, so no per-pixel test.
+                std::int64_t first = 0, last = tri.max_x - tri.min_x;
+                for (int k = 0; k < 3 && first <= last; ++k) {
+                    if (step_x[k] > 0) {
+                        if (e[k] < 0) first = std::max(first, (-e[k] + step_x[k] - 1) / step_x[k]);
+                    } else if (step_x[k] < 0) {
+                        if (e[k] < 0) last = -1;
+                        else last = std::min(last, e[k] / -step_x[k]);
+                    } else if (e[k] < 0) {
+                        last = -1;
                     }
                 }
-                encode(color, image.pixel(x, y));
+                if (first > last) continue;
+                const int band_row = y - row_begin;
+                s.touched_begin[band_row] =
+                    std::min(s.touched_begin[band_row], tri.min_x + static_cast<int>(first));
+                s.touched_end[band_row] =
+                    std::max(s.touched_end[band_row], tri.min_x + static_cast<int>(last) + 1);
+                const std::size_t row = static_cast<std::size_t>(band_row) * width +
+                                        static_cast<std::size_t>(tri.min_x);
+                for (std::int64_t x = first; x <= last; ++x) {
+                    // Screen-space barycentrics scaled by 1/w: their sum is
+                    // the interpolated 1/w (1 / view depth, linear on screen).
+                    const float p0 = static_cast<float>(e[0] - bias[0] + x * step_x[0]) * weight0;
+                    const float p1 = static_cast<float>(e[1] - bias[1] + x * step_x[1]) * weight1;
+                    const float p2 = static_cast<float>(e[2] - bias[2] + x * step_x[2]) * weight2;
+                    const float inverse_w = p0 + p1 + p2;
+                    // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
+                    const std::size_t i = row + static_cast<std::size_t>(x);
+                    if (inverse_w <= s.depth[i]) continue;
+                    s.depth[i] = inverse_w;
+                    s.visible[i] = &tri;
+                    s.weight1[i] = p1;  // divided by 1/w once, when shading
+                    s.weight2[i] = p2;
+                }
             }
         }
+    }
+    for (int y = row_begin; y < row_end; ++y) shade_row(y, width, s, image.pixel(0, y));
+}
+
+// Fragment stage for one row of the visibility buffer: each visible pixel
+// gets the shading model of its object, Phong pixels in runs through the
+// SIMD kernel; then clamp and gamma, and the background where nothing is.
+void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) const {
+    const std::size_t w = static_cast<std::size_t>(width);
+    s.r.resize(w);
+    s.g.resize(w);
+    s.b.resize(w);
+    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz}) v->resize(w);
+    s.run_x.resize(w);
+    const std::size_t offset = static_cast<std::size_t>(y % band_height) * w;
+    const float eye[3] = {scene.observer.position.x, scene.observer.position.y,
+                          scene.observer.position.z};
+
+    // A run: consecutive Phong pixels of one object, shaded together.
+    std::size_t run_length = 0;
+    const PreparedObject* run_object = nullptr;
+    auto flush = [&] {
+        if (run_length == 0) return;
+        const kernels::SurfaceRun surface{s.px.data(), s.py.data(), s.pz.data(), s.nx.data(),
+                                          s.ny.data(), s.nz.data(), run_length};
+        const int first = s.run_x[0];
+        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, eye,
+                            surface, {s.r.data() + first, s.g.data() + first, s.b.data() + first});
+        run_length = 0;
+    };
+
+    const int band_row = y % band_height;
+    const int begin = s.touched_begin[static_cast<std::size_t>(band_row)];
+    const int end = std::max(begin, s.touched_end[static_cast<std::size_t>(band_row)]);
+    for (int x = begin; x < end; ++x) {
+        const std::size_t i = offset + static_cast<std::size_t>(x);
+        const RasterTriangle* tri = s.visible[i];
+        if (!tri) {
+            flush();
+            continue;
+        }
+        const PreparedObject& object = objects[tri->object];
+        // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
+        const float w = 1.0f / s.depth[i];
+        const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
+        if (object.shading == Shading::Flat) {
+            flush();
+            const glm::vec3& c = flat_colors[tri->object][tri->source];
+            s.r[x] = c.x, s.g[x] = c.y, s.b[x] = c.z;
+            continue;
+        }
+        // Varyings of the three corners: the mesh's, or the clipped piece's.
+        if (object.shading == Shading::Gouraud) {
+            flush();
+            glm::vec3 c;
+            if (tri->clipped < 0) {
+                const auto& colors = vertex_colors[tri->object];
+                c = q0 * colors[tri->vertex[0]] + q1 * colors[tri->vertex[1]] +
+                    q2 * colors[tri->vertex[2]];
+            } else {
+                const CornerVaryings& v = *tri->varyings;
+                c = {q0 * v[0][0] + q1 * v[1][0] + q2 * v[2][0],
+                     q0 * v[0][1] + q1 * v[1][1] + q2 * v[2][1],
+                     q0 * v[0][2] + q1 * v[1][2] + q2 * v[2][2]};
+            }
+            s.r[x] = c.x, s.g[x] = c.y, s.b[x] = c.z;
+            continue;
+        }
+        if (run_object != &object || (run_length > 0 && s.run_x[run_length - 1] != x - 1)) flush();
+        run_object = &object;
+        glm::vec3 p, n;
+        if (tri->clipped < 0) {
+            p = q0 * object.positions[tri->vertex[0]] + q1 * object.positions[tri->vertex[1]] +
+                q2 * object.positions[tri->vertex[2]];
+            n = q0 * object.normals[tri->vertex[0]] + q1 * object.normals[tri->vertex[1]] +
+                q2 * object.normals[tri->vertex[2]];
+        } else {
+            const CornerVaryings& v = *tri->varyings;
+            auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
+            p = {mix(0), mix(1), mix(2)};
+            n = {mix(3), mix(4), mix(5)};
+        }
+        s.px[run_length] = p.x, s.py[run_length] = p.y, s.pz[run_length] = p.z;
+        s.nx[run_length] = n.x, s.ny[run_length] = n.y, s.nz[run_length] = n.z;
+        s.run_x[run_length] = x;
+        ++run_length;
+    }
+    flush();
+
+    // Clamp, gamma and encode the covered pixels; background as given.
+    const Rgb8 background = scene.output.background;
+    auto fill_background = [&](int from, int to) {
+        for (int x = from; x < to; ++x) {
+            std::uint8_t* p = row + 3 * x;
+            p[0] = background[0], p[1] = background[1], p[2] = background[2];
+        }
+    };
+    fill_background(0, begin);
+    fill_background(end, width);
+    int x = begin;
+    while (x < end) {
+        if (!s.visible[offset + x]) {
+            fill_background(x, x + 1);
+            ++x;
+            continue;
+        }
+        int run_end = x;
+        while (run_end < end && s.visible[offset + run_end]) ++run_end;
+        kernels.encode(s.r.data() + x, s.g.data() + x, s.b.data() + x,
+                       static_cast<std::size_t>(run_end - x), scene.output.gamma, row + 3 * x);
+        x = run_end;
+    }
+    // Leave the visibility buffer cleared for the next band.
+    if (begin < end) {
+        std::fill(s.depth.begin() + offset + begin, s.depth.begin() + offset + end, 0.0f);
+        std::fill(s.visible.begin() + offset + begin, s.visible.begin() + offset + end, nullptr);
     }
 }
 
@@ -433,14 +646,20 @@ std::size_t Renderer::triangle_count() const {
     return count;
 }
 
+int Renderer::thread_count() const { return impl_->pool.size(); }
+
 void Renderer::render_into(Image& image) {
     const int width = impl_->scene.output.width;
     const int height = impl_->scene.output.height;
     if (image.width != width || image.height != height) image = Image(width, height);
-    impl_->depth.resize(static_cast<std::size_t>(width) * height);
-    impl_->vertex_and_setup(width, height);
-    impl_->pool.parallel_for(impl_->bands.size(), [&](std::size_t band) {
-        impl_->rasterize_band(static_cast<int>(band), image);
+    Impl& impl = *impl_;
+    impl.band_count = (height + band_height - 1) / band_height;
+    impl.vertex_stage(width, height);
+    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
+        impl.setup(impl.chunks[c], width, height);
+    });
+    impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
+        impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
     });
 }
 

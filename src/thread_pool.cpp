@@ -8,7 +8,7 @@ ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
     if (threads <= 0) threads = 1;
     workers_.reserve(static_cast<std::size_t>(threads - 1));
-    for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { worker_loop(); });
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { worker_loop(i); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -20,12 +20,12 @@ ThreadPool::~ThreadPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
-void ThreadPool::run_job(const std::function<void(std::size_t)>& job, std::size_t count) {
+void ThreadPool::run_job(const Job& job, std::size_t count, int worker) {
     for (;;) {
         std::size_t index = next_index_.fetch_add(1, std::memory_order_relaxed);
         if (index >= count) return;
         try {
-            job(index);
+            job(index, worker);
         } catch (...) {
             std::lock_guard lock(mutex_);
             if (!failure_) failure_ = std::current_exception();
@@ -34,10 +34,10 @@ void ThreadPool::run_job(const std::function<void(std::size_t)>& job, std::size_
     }
 }
 
-void ThreadPool::worker_loop() {
+void ThreadPool::worker_loop(int worker) {
     std::size_t seen_generation = 0;
     for (;;) {
-        const std::function<void(std::size_t)>* job = nullptr;
+        const Job* job = nullptr;
         std::size_t count = 0;
         {
             std::unique_lock lock(mutex_);
@@ -50,7 +50,7 @@ void ThreadPool::worker_loop() {
             count = job_count_;
             ++busy_workers_;
         }
-        run_job(*job, count);
+        run_job(*job, count, worker);
         {
             std::lock_guard lock(mutex_);
             --busy_workers_;
@@ -59,7 +59,7 @@ void ThreadPool::worker_loop() {
     }
 }
 
-void ThreadPool::parallel_for(std::size_t count, const std::function<void(std::size_t)>& job) {
+void ThreadPool::parallel_for(std::size_t count, const Job& job) {
     if (count == 0) return;
     {
         std::lock_guard lock(mutex_);
@@ -70,7 +70,7 @@ void ThreadPool::parallel_for(std::size_t count, const std::function<void(std::s
         ++generation_;
     }
     wake_.notify_all();
-    run_job(job, count);
+    run_job(job, count, 0);
     std::exception_ptr failure;
     {
         std::unique_lock lock(mutex_);

@@ -24,20 +24,22 @@ public:
 
     int size() const { return static_cast<int>(workers_.size()) + 1; }
 
-    // Calls job(index) for every index in [0, count), spread over all
-    // threads; returns when all are done. The first exception a job throws
-    // is rethrown here.
-    void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job);
+    // Calls job(index, worker) for every index in [0, count), spread over
+    // all threads; `worker` in [0, size()) names the thread, so a job can use
+    // per-thread scratch memory. Returns when all are done; the first
+    // exception a job throws is rethrown here.
+    using Job = std::function<void(std::size_t index, int worker)>;
+    void parallel_for(std::size_t count, const Job& job);
 
 private:
-    void worker_loop();
-    void run_job(const std::function<void(std::size_t)>& job, std::size_t count);
+    void worker_loop(int worker);
+    void run_job(const Job& job, std::size_t count, int worker);
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    const std::function<void(std::size_t)>* job_ = nullptr;
+    const Job* job_ = nullptr;
     std::size_t job_count_ = 0;
     std::atomic<std::size_t> next_index_{0};
     std::size_t generation_ = 0;

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -138,6 +139,49 @@ int run_check(const std::vector<std::string>& scenes) {
     return exit_success;
 }
 
+struct BenchArguments {
+    std::vector<std::string> scenes;
+    int frames = 20;
+    std::optional<int> width;
+    std::optional<int> height;
+    int threads = 0;
+};
+
+// Renders frames into memory and reports their times. One warm-up frame
+// first; median and minimum of the rest (timing, not a test: nothing here
+// passes or fails on speed).
+int run_bench(const BenchArguments& arguments) {
+    litkit::Scene scene = load(arguments.scenes);
+    if (arguments.width) scene.output.width = *arguments.width;
+    if (arguments.height) scene.output.height = *arguments.height;
+    settle_missing_lighting(scene, true);
+
+    using clock = std::chrono::steady_clock;
+    const auto setup_start = clock::now();
+    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.threads});
+    const double setup_ms =
+        std::chrono::duration<double, std::milli>(clock::now() - setup_start).count();
+    litkit::Image image;
+    renderer.render_into(image);  // warm-up
+    std::vector<double> frame_ms;
+    for (int frame = 0; frame < arguments.frames; ++frame) {
+        const auto start = clock::now();
+        renderer.render_into(image);
+        frame_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - start).count());
+    }
+    std::sort(frame_ms.begin(), frame_ms.end());
+    const std::size_t n = frame_ms.size();
+    const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
+    std::printf("scene: %s\n", arguments.scenes.empty() ? "(default)" : arguments.scenes.front().c_str());
+    std::printf("image: %dx%d, %zu triangles, %d threads\n", image.width, image.height,
+                renderer.triangle_count(), renderer.thread_count());
+    std::printf("setup: %.3f ms (meshes, normals, world space)\n", setup_ms);
+    std::printf("frames: %d, median %.3f ms, min %.3f ms\n", arguments.frames, median,
+                frame_ms.front());
+    std::printf("median_frame_ms=%.3f fps=%.1f\n", median, 1000.0 / median);
+    return exit_success;
+}
+
 int run_init(const std::string& file, bool force) {
     const fs::path path = file.empty() ? fs::path("scene.toml") : fs::path(file);
     std::error_code error;
@@ -189,6 +233,20 @@ int main(int argc, char** argv) {
     init->add_option("FILE", init_file, "File to write (default: scene.toml)");
     init->add_flag("-f,--force", init_force, "Replace the file if it exists");
 
+    BenchArguments bench_arguments;
+    CLI::App* bench = app.add_subcommand(
+        "bench", "Render frames into memory and report the time per frame");
+    bench->add_option("SCENE", bench_arguments.scenes,
+                      "Scene files (TOML), merged in order; none: the built-in default scene");
+    bench->add_option("--frames", bench_arguments.frames, "Frames to time (after one warm-up)")
+        ->check(CLI::Range(1, 100000));
+    bench->add_option("--width", bench_arguments.width, "Image width in pixels")
+        ->check(CLI::Range(1, 16384));
+    bench->add_option("--height", bench_arguments.height, "Image height in pixels")
+        ->check(CLI::Range(1, 16384));
+    bench->add_option("--threads", bench_arguments.threads, "Threads (0: one per core)")
+        ->check(CLI::Range(0, 1024));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& success) {
@@ -202,6 +260,7 @@ int main(int argc, char** argv) {
         if (render->parsed()) return run_render(render_arguments);
         if (check->parsed()) return run_check(check_scenes);
         if (init->parsed()) return run_init(init_file, init_force);
+        if (bench->parsed()) return run_bench(bench_arguments);
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
         print_diagnostics(error.warnings());

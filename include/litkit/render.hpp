@@ -32,6 +32,7 @@ public:
     void render_into(Image& image);
 
     std::size_t triangle_count() const;
+    int thread_count() const;
 
 private:
     struct Impl;

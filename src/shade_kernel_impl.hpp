@@ -1,0 +1,121 @@
+// Template text of the kernels in shade_kernel.hpp, instantiated once per
+// instruction set by shade_kernel_<arch>.cpp. The lighting itself is
+// equations::shade_point, the same template every other path uses, here with
+// T = an xsimd batch of floats. Nothing here instantiates a template on a
+// plain scalar type (std::min, shade_point<float>): the AVX2 copy of such an
+// inline function could be the one the linker keeps for every caller.
+#pragma once
+
+#include <xsimd/xsimd.hpp>
+
+
+#include "shade_kernel.hpp"
+
+namespace litkit::kernels::detail {
+
+template <class Arch>
+struct Impl {
+    using Batch = xsimd::batch<float, Arch>;
+    static constexpr std::size_t width = Batch::size;
+
+    template <Reflection R>
+    static void shade_run(std::span<const equations::PreparedLight> lights, const Material& material,
+                          const float eye[3], const SurfaceRun& s, const ColorRun& out) {
+        using namespace equations;
+        const MaterialT<Batch> m = splat<Batch>(material);
+        const Vec3<Batch> eye_position{Batch(eye[0]), Batch(eye[1]), Batch(eye[2])};
+        // Full batches straight from the arrays; the tail through a padded
+        // copy. (No float instantiation here: this text is also compiled
+        // with -mavx2, and an inline float function built that way could be
+        // the copy the linker keeps for every caller.)
+        auto shade_batch = [&](const float* px, const float* py, const float* pz, const float* nx,
+                               const float* ny, const float* nz, float* r, float* g, float* b) {
+            const Vec3<Batch> p{Batch::load_unaligned(px), Batch::load_unaligned(py),
+                                Batch::load_unaligned(pz)};
+            const Vec3<Batch> n = normalize(Vec3<Batch>{
+                Batch::load_unaligned(nx), Batch::load_unaligned(ny), Batch::load_unaligned(nz)});
+            const Vec3<Batch> v = normalize(eye_position - p);
+            const Vec3<Batch> color = shade_point<R>(lights, m, p, n, v);
+            color.x.store_unaligned(r);
+            color.y.store_unaligned(g);
+            color.z.store_unaligned(b);
+        };
+        std::size_t i = 0;
+        for (; i + width <= s.count; i += width) {
+            shade_batch(s.px + i, s.py + i, s.pz + i, s.nx + i, s.ny + i, s.nz + i, out.r + i,
+                        out.g + i, out.b + i);
+        }
+        if (i < s.count) {
+            alignas(64) float in[6][width];
+            alignas(64) float result[3][width];
+            const float* sources[6] = {s.px, s.py, s.pz, s.nx, s.ny, s.nz};
+            for (int k = 0; k < 6; ++k) {
+                for (std::size_t lane = 0; lane < width; ++lane) {
+                    // Pad with the last pixel: valid numbers, results unused.
+                    in[k][lane] = sources[k][i + lane < s.count ? i + lane : s.count - 1];
+                }
+            }
+            shade_batch(in[0], in[1], in[2], in[3], in[4], in[5], result[0], result[1], result[2]);
+            for (std::size_t lane = 0; i + lane < s.count; ++lane) {
+                out.r[i + lane] = result[0][lane];
+                out.g[i + lane] = result[1][lane];
+                out.b[i + lane] = result[2][lane];
+            }
+        }
+    }
+
+    static void shade_phong(Reflection reflection, std::span<const equations::PreparedLight> lights,
+                            const Material& material, const float eye[3], const SurfaceRun& surface,
+                            const ColorRun& out) {
+        switch (reflection) {
+            case Reflection::Lambert:
+                return shade_run<Reflection::Lambert>(lights, material, eye, surface, out);
+            case Reflection::HalfLambert:
+                return shade_run<Reflection::HalfLambert>(lights, material, eye, surface, out);
+            case Reflection::Phong:
+                return shade_run<Reflection::Phong>(lights, material, eye, surface, out);
+            case Reflection::BlinnPhong:
+                return shade_run<Reflection::BlinnPhong>(lights, material, eye, surface, out);
+        }
+    }
+
+    // Same arithmetic as litkit::to_pixel: clamp (NaN → 0), gamma, ·255,
+    // round half up (the values are ≥ 0, so this is lround).
+    static Batch to_levels(Batch intensity, float gamma) {
+        intensity = xsimd::select(intensity > Batch(0.0f), intensity, Batch(0.0f));  // NaN → 0
+        intensity = xsimd::min(intensity, Batch(1.0f));
+        if (gamma != 1.0f) intensity = xsimd::pow(intensity, Batch(1.0f / gamma));
+        return xsimd::floor(intensity * Batch(255.0f) + Batch(0.5f));
+    }
+
+    static void encode(const float* r, const float* g, const float* b, std::size_t count,
+                       float gamma, std::uint8_t* rgb) {
+        alignas(64) float levels[3][width];
+        alignas(64) float padded[3][width];
+        for (std::size_t i = 0; i < count; i += width) {
+            const std::size_t lanes = count - i < width ? count - i : width;
+            if (lanes == width) {
+                to_levels(Batch::load_unaligned(r + i), gamma).store_aligned(levels[0]);
+                to_levels(Batch::load_unaligned(g + i), gamma).store_aligned(levels[1]);
+                to_levels(Batch::load_unaligned(b + i), gamma).store_aligned(levels[2]);
+            } else {
+                for (std::size_t lane = 0; lane < width; ++lane) {
+                    const std::size_t from = i + (lane < lanes ? lane : lanes - 1);
+                    padded[0][lane] = r[from];
+                    padded[1][lane] = g[from];
+                    padded[2][lane] = b[from];
+                }
+                for (int c = 0; c < 3; ++c)
+                    to_levels(Batch::load_aligned(padded[c]), gamma).store_aligned(levels[c]);
+            }
+            for (std::size_t lane = 0; lane < lanes; ++lane) {
+                std::uint8_t* out = rgb + 3 * (i + lane);
+                out[0] = static_cast<std::uint8_t>(static_cast<int>(levels[0][lane]));
+                out[1] = static_cast<std::uint8_t>(static_cast<int>(levels[1][lane]));
+                out[2] = static_cast<std::uint8_t>(static_cast<int>(levels[2][lane]));
+            }
+        }
+    }
+};
+
+}  // namespace litkit::kernels::detail
