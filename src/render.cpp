@@ -185,7 +185,7 @@ struct Renderer::Impl {
     Scene scene;
     RenderOptions options;
     ThreadPool pool;
-    const kernels::Kernels& kernels = kernels::select_kernels();
+    const kernels::Kernels& kernels;
     std::vector<PreparedLight> lights;
     std::vector<PreparedObject> objects;
 
@@ -197,7 +197,12 @@ struct Renderer::Impl {
     std::vector<BandScratch> scratch;  // one per thread
     int band_count = 0;
 
-    Impl(const Scene& s, RenderOptions o) : scene(s), options(o), pool(o.threads) {}
+    Impl(const Scene& s, RenderOptions o)
+        : scene(s),
+          options(o),
+          pool(o.threads),
+          kernels(o.kernels == RenderOptions::Kernels::Portable ? kernels::portable_kernels
+                                                                : kernels::select_kernels()) {}
 
     void prepare();
     void vertex_stage(int width, int height);

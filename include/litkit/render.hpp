@@ -14,6 +14,10 @@ struct RenderOptions {
     // per R11, whether that is allowed.
     Reflection fallback_reflection = default_reflection;
     Shading fallback_shading = default_shading;
+    // Per-pixel kernels: the fastest this CPU runs (AVX2+FMA where present),
+    // or the portable ones (for comparing the two).
+    enum class Kernels { Best, Portable };
+    Kernels kernels = Kernels::Best;
 };
 
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)

@@ -1,0 +1,132 @@
+// Properties of the renderer that hold whatever the scene: the same picture
+// on any number of threads and with either set of SIMD kernels, and the
+// pipeline's edge cases (back faces, the near plane, empty scenes).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> example_scenes() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples"))
+        if (entry.path().extension() == ".toml") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+litkit::Scene small(litkit::Scene scene) {
+    scene.output.width = 200;
+    scene.output.height = 150;
+    return scene;
+}
+
+int max_difference(const litkit::Image& a, const litkit::Image& b) {
+    int worst = 0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(int(a.rgb[i]) - int(b.rgb[i])));
+    return worst;
+}
+
+int covered_pixels(const litkit::Image& image, const litkit::Rgb8& background) {
+    int covered = 0;
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+        covered += image.rgb[i] != background[0] || image.rgb[i + 1] != background[1] ||
+                   image.rgb[i + 2] != background[2];
+    return covered;
+}
+
+}  // namespace
+
+TEST(Render, ThreadCountDoesNotChangeThePicture) {
+    const std::vector<fs::path> files = example_scenes();
+    ASSERT_GE(files.size(), 10u);
+    for (const fs::path& file : files) {
+        const litkit::Scene scene = small(litkit::load_scene(std::span(&file, 1)));
+        const litkit::Image one = litkit::render(scene, {.threads = 1});
+        const litkit::Image three = litkit::render(scene, {.threads = 3});
+        EXPECT_EQ(one.rgb, three.rgb) << file;
+    }
+}
+
+TEST(Render, PortableAndBestKernelsAgreeWithin1On255) {
+    const std::vector<fs::path> files = example_scenes();
+    ASSERT_GE(files.size(), 10u);
+    for (const fs::path& file : files) {
+        const litkit::Scene scene = small(litkit::load_scene(std::span(&file, 1)));
+        litkit::RenderOptions portable;
+        portable.kernels = litkit::RenderOptions::Kernels::Portable;
+        const litkit::Image best = litkit::render(scene);
+        const litkit::Image fallback = litkit::render(scene, portable);
+        EXPECT_LE(max_difference(best, fallback), 1) << file;
+        EXPECT_GT(covered_pixels(best, scene.output.background), 0) << file;
+    }
+}
+
+TEST(Render, RenderingTwiceIntoTheSameImageGivesTheSamePicture) {
+    // The visibility buffers are reused between frames: a second frame must
+    // not see anything of the first.
+    litkit::Renderer renderer(small(litkit::default_scene()));
+    litkit::Image first, second;
+    renderer.render_into(first);
+    renderer.render_into(second);
+    renderer.render_into(second);
+    EXPECT_EQ(first.rgb, second.rgb);
+}
+
+TEST(Render, SceneWithoutObjectsIsAllBackground) {
+    litkit::Scene scene = small(litkit::default_scene());
+    scene.objects.clear();
+    scene.output.background = {12, 34, 56};
+    const litkit::Image image = litkit::render(scene);
+    EXPECT_EQ(covered_pixels(image, scene.output.background), 0);
+}
+
+TEST(Render, ObjectSeenFromInsideShowsOnlyBackFacesSoNothing) {
+    // A sphere around the camera shows the camera only its inside, whose
+    // triangles wind clockwise on screen: all culled.
+    litkit::Scene scene = small(litkit::default_scene());
+    scene.objects.resize(1);
+    scene.objects[0].shape = litkit::SphereShape{3.0f, 32, 16};
+    scene.objects[0].position = scene.observer.position;
+    const litkit::Image image = litkit::render(scene);
+    EXPECT_EQ(covered_pixels(image, scene.output.background), 0);
+}
+
+TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
+    // A cube turned 45° about y shows the camera (on +z) its front edge at
+    // z = √2 ≈ 1.41. With the eye at z = 3 and near = 1.8 the near plane sits
+    // at z = 1.2 and cuts through both visible faces: the strip around the
+    // edge is clipped away, the rest of the faces is still drawn.
+    litkit::Scene scene = small(litkit::default_scene());
+    scene.observer.position = {0, 0, 3};
+    scene.observer.look_at = {0, 0, 0};
+    scene.objects.resize(1);
+    scene.objects[0].shape = litkit::CubeShape{2.0f};
+    scene.objects[0].position = {0, 0, 0};
+    scene.objects[0].rotation_degrees = {0, 45, 0};
+    scene.lights.resize(1);
+    scene.lights[0].light = litkit::Light{litkit::AmbientLight{}};
+
+    scene.observer.near = 0.05f;
+    const int whole = covered_pixels(litkit::render(scene), scene.output.background);
+    scene.observer.near = 1.8f;
+    const litkit::Image clipped_image = litkit::render(scene);
+    const int clipped = covered_pixels(clipped_image, scene.output.background);
+    EXPECT_GT(whole, 200 * 150 / 4);
+    EXPECT_GT(clipped, whole / 10) << "the parts beyond the near plane must stay";
+    EXPECT_LT(clipped, whole * 9 / 10) << "the parts before the near plane must go";
+    // The centre column (the front edge, z ≈ 1.41 > 1.2) is clipped away.
+    const std::uint8_t* centre = clipped_image.pixel(100, 75);
+    EXPECT_EQ(centre[0], scene.output.background[0]);
+    EXPECT_EQ(centre[1], scene.output.background[1]);
+    EXPECT_EQ(centre[2], scene.output.background[2]);
+}
