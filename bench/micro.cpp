@@ -1,0 +1,107 @@
+// Google Benchmark microbenchmarks of the inner loops: shading a block of
+// pixels (each kernel set, and the scalar public function), and whole frames
+// of small scenes, where triangle setup and rasterization dominate.
+// Timing only: nothing here passes or fails.
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "litkit/lighting.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+#include "shade_kernel.hpp"
+
+namespace {
+
+// 1024 surface points on a unit sphere facing the eye, lit by a point and an
+// ambient light: a block of a full-screen Phong fill.
+struct Block {
+    std::vector<float> px, py, pz, nx, ny, nz, r, g, b;
+    std::vector<litkit::equations::PreparedLight> lights;
+    litkit::Material material;
+    float eye[3] = {0.0f, 0.0f, 4.0f};
+
+    explicit Block(std::size_t count) {
+        std::mt19937 random(1);
+        std::uniform_real_distribution<float> angle(-1.2f, 1.2f);
+        for (std::size_t i = 0; i < count; ++i) {
+            const float a = angle(random), b = angle(random);
+            const float x = std::sin(a) * std::cos(b), y = std::sin(b), z = std::cos(a) * std::cos(b);
+            px.push_back(x), py.push_back(y), pz.push_back(z);
+            nx.push_back(x), ny.push_back(y), nz.push_back(z);
+        }
+        r.resize(count), g.resize(count), b.resize(count);
+        lights.push_back(litkit::equations::prepare_light(
+            litkit::Light{litkit::PointLight{{2.0f, 2.0f, 3.0f}}, {1, 1, 1}, 12.0f}));
+        lights.push_back(litkit::equations::prepare_light(
+            litkit::Light{litkit::AmbientLight{}, {1, 1, 1}, 0.3f}));
+    }
+};
+
+void shade_block(benchmark::State& state, const litkit::kernels::Kernels& kernels,
+                 litkit::Reflection reflection) {
+    Block block(1024);
+    const litkit::kernels::SurfaceRun surface{block.px.data(), block.py.data(), block.pz.data(),
+                                              block.nx.data(), block.ny.data(), block.nz.data(),
+                                              block.px.size()};
+    for (auto _ : state) {
+        kernels.shade_phong(reflection, block.lights, block.material, block.eye, surface,
+                            {block.r.data(), block.g.data(), block.b.data()});
+        benchmark::DoNotOptimize(block.r.data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(block.px.size()));
+}
+
+void BM_ShadeBlockAvx2Phong(benchmark::State& state) {
+    shade_block(state, litkit::kernels::select_kernels(), litkit::Reflection::Phong);
+}
+void BM_ShadeBlockPortablePhong(benchmark::State& state) {
+    shade_block(state, litkit::kernels::portable_kernels, litkit::Reflection::Phong);
+}
+void BM_ShadeBlockAvx2Lambert(benchmark::State& state) {
+    shade_block(state, litkit::kernels::select_kernels(), litkit::Reflection::Lambert);
+}
+
+// The public scalar function, one point at a time (what a student calls).
+void BM_ShadeScalarPublic(benchmark::State& state) {
+    const litkit::Light lights[2] = {
+        litkit::Light{litkit::PointLight{{2.0f, 2.0f, 3.0f}}, {1, 1, 1}, 12.0f},
+        litkit::Light{litkit::AmbientLight{}, {1, 1, 1}, 0.3f}};
+    const litkit::Material material;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(litkit::shade(litkit::Reflection::Phong, material, lights,
+                                               {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f},
+                                               {0.0f, 0.0f, 4.0f}));
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+// Whole frames: vertex, setup, rasterize and shade of one object.
+void frame(benchmark::State& state, litkit::Shape shape, int width, int height) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.objects.resize(1);
+    scene.objects[0].shape = shape;
+    scene.output.width = width;
+    scene.output.height = height;
+    litkit::Renderer renderer(scene, {.threads = 1});
+    litkit::Image image;
+    for (auto _ : state) renderer.render_into(image);
+    state.counters["triangles"] = static_cast<double>(renderer.triangle_count());
+}
+
+void BM_FrameCube640x480(benchmark::State& state) { frame(state, litkit::CubeShape{2.0f}, 640, 480); }
+void BM_FrameSphere65kTriangles640x480(benchmark::State& state) {
+    frame(state, litkit::SphereShape{1.0f, 256, 128}, 640, 480);
+}
+
+}  // namespace
+
+BENCHMARK(BM_ShadeBlockAvx2Phong);
+BENCHMARK(BM_ShadeBlockPortablePhong);
+BENCHMARK(BM_ShadeBlockAvx2Lambert);
+BENCHMARK(BM_ShadeScalarPublic);
+BENCHMARK(BM_FrameCube640x480)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FrameSphere65kTriangles640x480)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
