@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -195,6 +196,7 @@ struct Renderer::Impl {
     std::vector<std::vector<glm::vec3>> flat_colors;     // flat, per object, per triangle
     std::vector<SetupChunk> chunks;
     std::vector<BandScratch> scratch;  // one per thread
+    std::vector<std::uint8_t> background_row;  // one image row of background colour
     int band_count = 0;
 
     Impl(const Scene& s, RenderOptions o)
@@ -609,12 +611,11 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     flush();
 
     // Clamp, gamma and encode the covered pixels; background as given.
-    const Rgb8 background = scene.output.background;
+    // Background spans are copied from a row prepared once per frame.
     auto fill_background = [&](int from, int to) {
-        for (int x = from; x < to; ++x) {
-            std::uint8_t* p = row + 3 * x;
-            p[0] = background[0], p[1] = background[1], p[2] = background[2];
-        }
+        if (from < to)
+            std::memcpy(row + 3 * from, background_row.data() + 3 * from,
+                        3 * static_cast<std::size_t>(to - from));
     };
     fill_background(0, begin);
     fill_background(end, width);
@@ -659,6 +660,9 @@ void Renderer::render_into(Image& image) {
     if (image.width != width || image.height != height) image = Image(width, height);
     Impl& impl = *impl_;
     impl.band_count = (height + band_height - 1) / band_height;
+    impl.background_row.resize(3 * static_cast<std::size_t>(width));
+    for (std::size_t i = 0; i < impl.background_row.size(); ++i)
+        impl.background_row[i] = impl.scene.output.background[i % 3];
     impl.vertex_stage(width, height);
     impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
         impl.setup(impl.chunks[c], width, height);

@@ -144,6 +144,8 @@ struct BenchArguments {
     int frames = 20;
     std::optional<int> width;
     std::optional<int> height;
+    std::optional<std::string> reflection;
+    std::optional<std::string> shading;
     int threads = 0;
 };
 
@@ -154,6 +156,8 @@ int run_bench(const BenchArguments& arguments) {
     litkit::Scene scene = load(arguments.scenes);
     if (arguments.width) scene.output.width = *arguments.width;
     if (arguments.height) scene.output.height = *arguments.height;
+    if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
+    if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
     settle_missing_lighting(scene, true);
 
     using clock = std::chrono::steady_clock;
@@ -244,6 +248,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 16384));
     bench->add_option("--height", bench_arguments.height, "Image height in pixels")
         ->check(CLI::Range(1, 16384));
+    bench->add_option("--reflection", bench_arguments.reflection, "Reflection model")
+        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
+    bench->add_option("--shading", bench_arguments.shading, "Shading model")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
     bench->add_option("--threads", bench_arguments.threads, "Threads (0: one per core)")
         ->check(CLI::Range(0, 1024));
 
