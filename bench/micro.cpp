@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "litkit/image.hpp"
 #include "litkit/lighting.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
@@ -95,8 +96,18 @@ void BM_FrameSphere65kTriangles640x480(benchmark::State& state) {
     frame(state, litkit::SphereShape{1.0f, 256, 128}, 640, 480);
 }
 
+// PNG encoding of the default scene at 800×600 per zlib level: time, and
+// the file size as a counter (the choice of level in image.cpp).
+void BM_EncodeDefaultScenePng(benchmark::State& state) {
+    const litkit::Image image = litkit::render(litkit::default_scene(), {.threads = 1});
+    std::size_t bytes = 0;
+    for (auto _ : state) bytes = litkit::encode_png(image, static_cast<int>(state.range(0))).size();
+    state.counters["bytes"] = static_cast<double>(bytes);
+}
+
 }  // namespace
 
+BENCHMARK(BM_EncodeDefaultScenePng)->Arg(0)->Arg(1)->Arg(3)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadeBlockAvx2Phong);
 BENCHMARK(BM_ShadeBlockPortablePhong);
 BENCHMARK(BM_ShadeBlockAvx2Lambert);

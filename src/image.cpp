@@ -1,6 +1,7 @@
 #include "litkit/image.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <csetjmp>
 #include <cstring>
@@ -34,7 +35,7 @@ void on_png_flush(png_structp) {}
 
 // Encodes into state.bytes; returns false (with state.error) on failure.
 // Nothing with a destructor lives between setjmp and longjmp.
-bool encode_png(const Image& image, PngWriteState& state) {
+bool encode_png(const Image& image, int level, PngWriteState& state) {
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, &state, on_png_error, on_png_warning);
     if (!png) return false;
@@ -48,10 +49,12 @@ bool encode_png(const Image& image, PngWriteState& state) {
         return false;
     }
     png_set_write_fn(png, &state, on_png_write, on_png_flush);
-    // Level 1 with the "up" filter: most of the size win of deeper levels at a
-    // fraction of their time on rendered images with flat backgrounds
-    // (docs/performance.md has the measurements).
-    png_set_compression_level(png, 1);
+    // The "up" filter turns flat backgrounds and smooth gradients into runs
+    // of zeros, which zlib's run-length strategy packs fastest: on the
+    // default scene, 5.4 ms and 60 KB against 6.2 ms and 64 KB for level 1
+    // with the default strategy (docs/performance.md).
+    png_set_compression_level(png, level);
+    png_set_compression_strategy(png, Z_RLE);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                  static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
@@ -67,14 +70,16 @@ bool encode_png(const Image& image, PngWriteState& state) {
 
 }  // namespace
 
-std::string encode_png(const Image& image) {
+std::string encode_png(const Image& image, int compression_level) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
         throw std::invalid_argument("encode_png: image has no pixels or an inconsistent size");
     }
     PngWriteState state;
     state.bytes.reserve(image.rgb.size() / 4 + 1024);
-    if (!encode_png(image, state)) {
+    if (compression_level < 0 || compression_level > 9)
+        throw std::invalid_argument("encode_png: compression level must be 0-9");
+    if (!encode_png(image, compression_level, state)) {
         throw std::runtime_error("PNG encoding failed: " +
                                  (state.error.empty() ? std::string("out of memory") : state.error));
     }

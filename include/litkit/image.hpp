@@ -22,8 +22,11 @@ struct Image {
     }
 };
 
-// The PNG file bytes of `image` (8-bit RGB, compression level 1).
-std::string encode_png(const Image& image);
+// The PNG file bytes of `image` (8-bit RGB). zlib `compression_level` 0–9;
+// the default, 1, is the measured best trade of time for size on rendered
+// pictures (docs/performance.md).
+inline constexpr int default_png_compression = 1;
+std::string encode_png(const Image& image, int compression_level = default_png_compression);
 
 // Writes `image` as a PNG, whole or not at all (write_file_atomically).
 // Throws IoError (Access::Write) on failure, leaving any old file untouched.
