@@ -28,16 +28,41 @@ constexpr int exit_success = 0;
 constexpr int exit_io = 1;
 constexpr int exit_invalid = 2;
 
-struct RenderArguments {
+// What `render` and `bench` share: the scene and what replaces parts of it.
+struct SceneArguments {
     std::vector<std::string> scenes;
-    std::string output;
     std::optional<int> width;
     std::optional<int> height;
     std::optional<std::string> reflection;
     std::optional<std::string> shading;
     int threads = 0;
+};
+
+struct RenderArguments {
+    SceneArguments scene;
+    std::string output;
     bool yes = false;
 };
+
+struct BenchArguments {
+    SceneArguments scene;
+    int frames = 20;
+};
+
+void add_scene_options(CLI::App* command, SceneArguments& arguments) {
+    command->add_option("SCENE", arguments.scenes,
+                        "Scene files (TOML), merged in order; none: the built-in default scene");
+    command->add_option("--width", arguments.width, "Image width in pixels")
+        ->check(CLI::Range(1, 16384));
+    command->add_option("--height", arguments.height, "Image height in pixels")
+        ->check(CLI::Range(1, 16384));
+    command->add_option("--reflection", arguments.reflection, "Reflection model")
+        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
+    command->add_option("--shading", arguments.shading, "Shading model")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+    command->add_option("--threads", arguments.threads, "Threads (0: one per core)")
+        ->check(CLI::Range(0, 1024));
+}
 
 // A usage problem found after CLI11's own parsing (exit status 2).
 struct UsageError {
@@ -104,17 +129,24 @@ std::vector<fs::path> inputs_of(const litkit::Scene& scene, const std::vector<st
     return inputs;
 }
 
-int run_render(const RenderArguments& arguments) {
+// The scene with the command line's replacements of [output] and [lighting].
+litkit::Scene load(const SceneArguments& arguments) {
     litkit::Scene scene = load(arguments.scenes);
     if (arguments.width) scene.output.width = *arguments.width;
     if (arguments.height) scene.output.height = *arguments.height;
     if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
     if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
+    return scene;
+}
+
+int run_render(const RenderArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
 
+    const std::vector<std::string>& files = arguments.scene.scenes;
     const fs::path output =
-        arguments.output.empty() ? default_output(arguments.scenes) : fs::path(arguments.output);
-    for (const fs::path& input : inputs_of(scene, arguments.scenes)) {
+        arguments.output.empty() ? default_output(files) : fs::path(arguments.output);
+    for (const fs::path& input : inputs_of(scene, files)) {
         if (litkit::same_file(input, output)) {
             throw UsageError{"refusing to write the image over input file '" + input.string() +
                              "'; choose another name with -o"};
@@ -122,7 +154,7 @@ int run_render(const RenderArguments& arguments) {
     }
 
     const auto start = std::chrono::steady_clock::now();
-    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.threads});
+    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.scene.threads});
     litkit::Image image = renderer.render();
     litkit::write_png(image, output);
     const double seconds =
@@ -139,30 +171,16 @@ int run_check(const std::vector<std::string>& scenes) {
     return exit_success;
 }
 
-struct BenchArguments {
-    std::vector<std::string> scenes;
-    int frames = 20;
-    std::optional<int> width;
-    std::optional<int> height;
-    std::optional<std::string> reflection;
-    std::optional<std::string> shading;
-    int threads = 0;
-};
-
 // Renders frames into memory and reports their times. One warm-up frame
 // first; median and minimum of the rest (timing, not a test: nothing here
 // passes or fails on speed).
 int run_bench(const BenchArguments& arguments) {
-    litkit::Scene scene = load(arguments.scenes);
-    if (arguments.width) scene.output.width = *arguments.width;
-    if (arguments.height) scene.output.height = *arguments.height;
-    if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
-    if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
+    litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, true);
 
     using clock = std::chrono::steady_clock;
     const auto setup_start = clock::now();
-    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.threads});
+    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.scene.threads});
     const double setup_ms =
         std::chrono::duration<double, std::milli>(clock::now() - setup_start).count();
     litkit::Image image;
@@ -176,7 +194,8 @@ int run_bench(const BenchArguments& arguments) {
     std::sort(frame_ms.begin(), frame_ms.end());
     const std::size_t n = frame_ms.size();
     const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
-    std::printf("scene: %s\n", arguments.scenes.empty() ? "(default)" : arguments.scenes.front().c_str());
+    const std::vector<std::string>& files = arguments.scene.scenes;
+    std::printf("scene: %s\n", files.empty() ? "(default)" : files.front().c_str());
     std::printf("image: %dx%d, %zu triangles, %d threads\n", image.width, image.height,
                 renderer.triangle_count(), renderer.thread_count());
     std::printf("setup: %.3f ms (meshes, normals, world space)\n", setup_ms);
@@ -210,20 +229,9 @@ int main(int argc, char** argv) {
 
     RenderArguments render_arguments;
     CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
-    render->add_option("SCENE", render_arguments.scenes,
-                       "Scene files (TOML), merged in order; none: the built-in default scene");
+    add_scene_options(render, render_arguments.scene);
     render->add_option("-o,--output", render_arguments.output,
                        "Output PNG (default: the first scene's name with .png)");
-    render->add_option("--width", render_arguments.width, "Image width in pixels")
-        ->check(CLI::Range(1, 16384));
-    render->add_option("--height", render_arguments.height, "Image height in pixels")
-        ->check(CLI::Range(1, 16384));
-    render->add_option("--reflection", render_arguments.reflection, "Reflection model")
-        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
-    render->add_option("--shading", render_arguments.shading, "Shading model")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
-    render->add_option("--threads", render_arguments.threads, "Threads (0: one per core)")
-        ->check(CLI::Range(0, 1024));
     render->add_flag("-y,--yes", render_arguments.yes,
                      "Use the default models (phong / phong) where [lighting] leaves one out");
 
@@ -240,20 +248,9 @@ int main(int argc, char** argv) {
     BenchArguments bench_arguments;
     CLI::App* bench = app.add_subcommand(
         "bench", "Render frames into memory and report the time per frame");
-    bench->add_option("SCENE", bench_arguments.scenes,
-                      "Scene files (TOML), merged in order; none: the built-in default scene");
+    add_scene_options(bench, bench_arguments.scene);
     bench->add_option("--frames", bench_arguments.frames, "Frames to time (after one warm-up)")
         ->check(CLI::Range(1, 100000));
-    bench->add_option("--width", bench_arguments.width, "Image width in pixels")
-        ->check(CLI::Range(1, 16384));
-    bench->add_option("--height", bench_arguments.height, "Image height in pixels")
-        ->check(CLI::Range(1, 16384));
-    bench->add_option("--reflection", bench_arguments.reflection, "Reflection model")
-        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
-    bench->add_option("--shading", bench_arguments.shading, "Shading model")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
-    bench->add_option("--threads", bench_arguments.threads, "Threads (0: one per core)")
-        ->check(CLI::Range(0, 1024));
 
     try {
         app.parse(argc, argv);
