@@ -178,6 +178,7 @@ struct BandScratch {
     std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
     std::vector<int> run_x;                      // their pixel columns
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
+    std::size_t shaded_pixels = 0;               // this frame, by this thread
 };
 
 }  // namespace
@@ -628,6 +629,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         }
         int run_end = x;
         while (run_end < end && s.visible[offset + run_end]) ++run_end;
+        s.shaded_pixels += static_cast<std::size_t>(run_end - x);
         kernels.encode(s.r.data() + x, s.g.data() + x, s.b.data() + x,
                        static_cast<std::size_t>(run_end - x), scene.output.gamma, row + 3 * x);
         x = run_end;
@@ -654,6 +656,12 @@ std::size_t Renderer::triangle_count() const {
 
 int Renderer::thread_count() const { return impl_->pool.size(); }
 
+std::size_t Renderer::shaded_pixel_count() const {
+    std::size_t count = 0;
+    for (const BandScratch& scratch : impl_->scratch) count += scratch.shaded_pixels;
+    return count;
+}
+
 void Renderer::render_into(Image& image) {
     const int width = impl_->scene.output.width;
     const int height = impl_->scene.output.height;
@@ -663,6 +671,7 @@ void Renderer::render_into(Image& image) {
     impl.background_row.resize(3 * static_cast<std::size_t>(width));
     for (std::size_t i = 0; i < impl.background_row.size(); ++i)
         impl.background_row[i] = impl.scene.output.background[i % 3];
+    for (BandScratch& scratch : impl.scratch) scratch.shaded_pixels = 0;
     impl.vertex_stage(width, height);
     impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
         impl.setup(impl.chunks[c], width, height);

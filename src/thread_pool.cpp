@@ -20,12 +20,12 @@ ThreadPool::~ThreadPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
-void ThreadPool::run_job(const Job& job, std::size_t count, int worker) {
+void ThreadPool::run_task(const Task& task, std::size_t count, int worker) {
     for (;;) {
         std::size_t index = next_index_.fetch_add(1, std::memory_order_relaxed);
         if (index >= count) return;
         try {
-            job(index, worker);
+            task.call(task.context, index, worker);
         } catch (...) {
             std::lock_guard lock(mutex_);
             if (!failure_) failure_ = std::current_exception();
@@ -37,20 +37,20 @@ void ThreadPool::run_job(const Job& job, std::size_t count, int worker) {
 void ThreadPool::worker_loop(int worker) {
     std::size_t seen_generation = 0;
     for (;;) {
-        const Job* job = nullptr;
+        Task task;
         std::size_t count = 0;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stopping_ || generation_ != seen_generation; });
             if (stopping_) return;
             seen_generation = generation_;
-            // A worker waking after the job finished finds job_ cleared.
-            if (!job_) continue;
-            job = job_;
+            // A worker waking after the job finished finds task_ cleared.
+            if (!task_.call) continue;
+            task = task_;
             count = job_count_;
             ++busy_workers_;
         }
-        run_job(*job, count, worker);
+        run_task(task, count, worker);
         {
             std::lock_guard lock(mutex_);
             --busy_workers_;
@@ -59,25 +59,25 @@ void ThreadPool::worker_loop(int worker) {
     }
 }
 
-void ThreadPool::parallel_for(std::size_t count, const Job& job) {
+void ThreadPool::run(std::size_t count, Trampoline call, const void* context) {
     if (count == 0) return;
     {
         std::lock_guard lock(mutex_);
-        job_ = &job;
+        task_ = Task{call, context};
         job_count_ = count;
         next_index_.store(0, std::memory_order_relaxed);
         failure_ = nullptr;
         ++generation_;
     }
     wake_.notify_all();
-    run_job(job, count, 0);
+    run_task(Task{call, context}, count, 0);
     std::exception_ptr failure;
     {
         std::unique_lock lock(mutex_);
-        // Workers that had not woken yet find job_ cleared and skip this
-        // generation; wait only for those inside run_job.
+        // Workers that had not woken yet find task_ cleared and skip this
+        // generation; wait only for those inside run_task.
         done_.wait(lock, [&] { return busy_workers_ == 0; });
-        job_ = nullptr;
+        task_ = Task{};
         failure = failure_;
     }
     if (failure) std::rethrow_exception(failure);

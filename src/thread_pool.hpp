@@ -6,7 +6,8 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
-#include <functional>
+#include <memory>
+#include <type_traits>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -27,19 +28,31 @@ public:
     // Calls job(index, worker) for every index in [0, count), spread over
     // all threads; `worker` in [0, size()) names the thread, so a job can use
     // per-thread scratch memory. Returns when all are done; the first
-    // exception a job throws is rethrown here.
-    using Job = std::function<void(std::size_t index, int worker)>;
-    void parallel_for(std::size_t count, const Job& job);
+    // exception a job throws is rethrown here. `job` is called through a
+    // plain pointer (no std::function), so a call allocates nothing.
+    template <class Job>
+    void parallel_for(std::size_t count, Job&& job) {
+        using Callable = std::remove_reference_t<Job>;
+        run(count, [](const void* context, std::size_t index, int worker) {
+            (*static_cast<Callable*>(const_cast<void*>(context)))(index, worker);
+        }, std::addressof(job));
+    }
 
 private:
+    using Trampoline = void (*)(const void* context, std::size_t index, int worker);
+    struct Task {
+        Trampoline call = nullptr;
+        const void* context = nullptr;
+    };
+    void run(std::size_t count, Trampoline call, const void* context);
     void worker_loop(int worker);
-    void run_job(const Job& job, std::size_t count, int worker);
+    void run_task(const Task& task, std::size_t count, int worker);
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    const Job* job_ = nullptr;
+    Task task_;  // call == nullptr: no job under way
     std::size_t job_count_ = 0;
     std::atomic<std::size_t> next_index_{0};
     std::size_t generation_ = 0;

@@ -351,6 +351,7 @@ TEST_F(Cli, BenchPrintsFrameTimesWithAMachineReadableLastLine) {
     CliRun run = run_cli("bench --frames 3 --width 64 --height 48 --shading flat", dir);
     ASSERT_EQ(run.status, 0) << run.output;
     EXPECT_NE(run.output.find("image: 64x48, 12 triangles"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("pixels shaded: "), std::string::npos) << run.output;
     const std::size_t last_line = run.output.rfind("median_frame_ms=");
     ASSERT_NE(last_line, std::string::npos) << run.output;
     EXPECT_NE(run.output.find(" fps=", last_line), std::string::npos) << run.output;

@@ -82,6 +82,18 @@ TEST(Render, RenderingTwiceIntoTheSameImageGivesTheSamePicture) {
     EXPECT_EQ(first.rgb, second.rgb);
 }
 
+TEST(Render, ShadedPixelCountIsTheCoveredPixels) {
+    // Each covered pixel is shaded once, so the count equals the pixels that
+    // differ from the background (the default cube never matches it).
+    litkit::Scene scene = small(litkit::default_scene());
+    litkit::Renderer renderer(scene);
+    litkit::Image image;
+    renderer.render_into(image);
+    const int covered = covered_pixels(image, scene.output.background);
+    EXPECT_GT(covered, 1000);
+    EXPECT_EQ(renderer.shaded_pixel_count(), static_cast<std::size_t>(covered));
+}
+
 TEST(Render, SceneWithoutObjectsIsAllBackground) {
     litkit::Scene scene = small(litkit::default_scene());
     scene.objects.clear();

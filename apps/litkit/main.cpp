@@ -199,6 +199,10 @@ int run_bench(const BenchArguments& arguments) {
     std::printf("image: %dx%d, %zu triangles, %d threads\n", image.width, image.height,
                 renderer.triangle_count(), renderer.thread_count());
     std::printf("setup: %.3f ms (meshes, normals, world space)\n", setup_ms);
+    std::printf("pixels shaded: %zu per frame (%.1f%% of the image)\n",
+                renderer.shaded_pixel_count(),
+                100.0 * static_cast<double>(renderer.shaded_pixel_count()) /
+                    (static_cast<double>(image.width) * image.height));
     std::printf("frames: %d, median %.3f ms, min %.3f ms\n", arguments.frames, median,
                 frame_ms.front());
     std::printf("median_frame_ms=%.3f fps=%.1f\n", median, 1000.0 / median);

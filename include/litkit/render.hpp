@@ -37,6 +37,8 @@ public:
 
     std::size_t triangle_count() const;
     int thread_count() const;
+    // Pixels the last frame covered, each shaded once (hidden ones are not).
+    std::size_t shaded_pixel_count() const;
 
 private:
     struct Impl;
