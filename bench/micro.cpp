@@ -79,16 +79,19 @@ void BM_ShadeScalarPublic(benchmark::State& state) {
 }
 
 // Whole frames: vertex, setup, rasterize and shade of one object.
-void frame(benchmark::State& state, litkit::Shape shape, int width, int height) {
+void frame(benchmark::State& state, litkit::Shape shape, int width, int height,
+           litkit::Shading shading = litkit::Shading::Phong) {
     litkit::Scene scene = litkit::default_scene();
     scene.objects.resize(1);
     scene.objects[0].shape = shape;
+    scene.objects[0].shading = shading;
     scene.output.width = width;
     scene.output.height = height;
     litkit::Renderer renderer(scene, {.threads = 1});
     litkit::Image image;
     for (auto _ : state) renderer.render_into(image);
     state.counters["triangles"] = static_cast<double>(renderer.triangle_count());
+    state.counters["pixels"] = static_cast<double>(renderer.shaded_pixel_count());
 }
 
 void BM_FrameCube640x480(benchmark::State& state) { frame(state, litkit::CubeShape{2.0f}, 640, 480); }
@@ -105,8 +108,23 @@ void BM_EncodeDefaultScenePng(benchmark::State& state) {
     state.counters["bytes"] = static_cast<double>(bytes);
 }
 
+// The stages in isolation, as far as a whole frame allows: a 261k-triangle
+// sphere drawn 64×48 is all vertex work, clipping, setup and binning (each
+// triangle covers almost no pixel); a flat-shaded sphere filling 1920×1080
+// is all rasterization and visibility (one colour per triangle, no lighting
+// per pixel).
+void BM_StageSetup261kTriangles(benchmark::State& state) {
+    frame(state, litkit::SphereShape{1.0f, 512, 256}, 64, 48, litkit::Shading::Phong);
+}
+void BM_StageRasterizeFlatFill1920x1080(benchmark::State& state) {
+    // Radius 3 about the default cube's centre fills the default view.
+    frame(state, litkit::SphereShape{3.0f, 64, 32}, 1920, 1080, litkit::Shading::Flat);
+}
+
 }  // namespace
 
+BENCHMARK(BM_StageSetup261kTriangles)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StageRasterizeFlatFill1920x1080)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EncodeDefaultScenePng)->Arg(0)->Arg(1)->Arg(3)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadeBlockAvx2Phong);
 BENCHMARK(BM_ShadeBlockPortablePhong);

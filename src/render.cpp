@@ -291,21 +291,9 @@ void Renderer::Impl::vertex_stage(int width, int height) {
                                            object.positions[i], object.normals[i], eye);
             }
         });
-        if (object.shading == Shading::Flat) {
-            std::vector<glm::vec3>& flat = flat_colors[o];
-            flat.resize(object.triangles.size());
-            pool.parallel_for((flat.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
-                const std::size_t end = std::min(flat.size(), (c + 1) * chunk);
-                for (std::size_t t = c * chunk; t < end; ++t) {
-                    const auto& v = object.triangles[t];
-                    const glm::vec3 centroid =
-                        (object.positions[v[0]] + object.positions[v[1]] + object.positions[v[2]]) /
-                        3.0f;
-                    flat[t] = light_with(object.reflection, lights, object.material, centroid,
-                                         object.face_normals[t], eye);
-                }
-            });
-        }
+        // Flat colours are computed in setup, only for triangles that
+        // survive culling and clipping.
+        if (object.shading == Shading::Flat) flat_colors[o].resize(object.triangles.size());
     }
 }
 
@@ -321,6 +309,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
     chunk.triangles.clear();
     chunk.clipped.clear();
 
+    bool flat_done = false;  // the current source triangle's flat colour is computed
     // Viewport and setup of one (piece of a) triangle; false when culled.
     auto emit = [&](const std::array<glm::vec4, 3>& corners, std::uint32_t source,
                     const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
@@ -362,6 +351,17 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         if (raster.min_x > raster.max_x || raster.min_y > raster.max_y) return;
         raster.object = chunk.object;
         raster.source = source;
+        if (object.shading == Shading::Flat && !flat_done) {
+            // SPEC §3 flat: lit once, at the centroid of the whole (unclipped)
+            // triangle, with its face normal.
+            const auto& v = object.triangles[source];
+            const glm::vec3 centroid =
+                (object.positions[v[0]] + object.positions[v[1]] + object.positions[v[2]]) / 3.0f;
+            flat_colors[chunk.object][source] =
+                light_with(object.reflection, lights, object.material, centroid,
+                           object.face_normals[source], scene.observer.position);
+            flat_done = true;
+        }
         raster.clipped = -1;
         if (varyings) {
             raster.clipped = static_cast<std::int32_t>(chunk.clipped.size());
@@ -384,6 +384,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         }
         if (rejected) continue;
         const std::uint32_t source = static_cast<std::uint32_t>(t);
+        flat_done = false;
         if (all_inside) {
             emit(corners, source, indices, nullptr);
             continue;
