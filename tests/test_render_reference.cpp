@@ -2,16 +2,25 @@
 // reference: a small ray caster in double precision over the same triangles.
 //
 // The reference takes nothing from the library but the local triangles of the
-// built-in shapes (make_sphere, make_cube, make_torus, which have their own
-// tests). The world transform (SPEC §2), face and vertex normals (DD8, DD9),
-// camera rays (SPEC §1), shading models (SPEC §3) and lighting (SPEC §4) are
-// all computed here, by hand, in double.
+// objects (make_sphere, make_cube, make_torus for the built-in shapes, and
+// object_mesh for teapots and mesh files; meshes have their own tests). The
+// world transform (SPEC §2), face and vertex normals (DD8, DD9), camera rays
+// (SPEC §1), shading models (SPEC §3) and lighting (SPEC §4) are all computed
+// here, by hand, in double, for a whole scene: the nearest hit over all
+// objects, each with its own reflection and shading (or [lighting]'s).
+//
+// Besides hand-made scenes, every scene in examples/ is compared with the
+// renderer at a small size, within 1/255 (RenderMatchesReferenceExample).
 //
 // Pixels next to a discontinuity of the picture are not compared, since there
 // a sub-pixel difference in where an edge falls changes a pixel completely:
 // silhouettes (the 3×3 neighbourhood does not hit one and the same object, or
 // background), edges between flat-shaded triangles of different colours, and
-// the edge of a spot light's cone.
+// the edge of a spot light's cone. An occlusion edge inside one object (the
+// teapot's rim against the surface behind it) is not excluded: where a pixel
+// centre lies within float rounding of such an edge (a thousandth of a
+// pixel), the two pictures may show different surfaces there, so a few such
+// pixels may differ completely (one in teapot.toml at 200×150).
 //
 // Set LITKIT_REFERENCE_DUMP to a folder to get both images of every case as
 // PPM files there.
@@ -20,6 +29,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -28,6 +39,7 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <iomanip>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -82,10 +94,12 @@ dvec3 local_to_world(const litkit::SceneObject& object, const glm::vec3& local) 
     return to_double(object.position) + rotated;
 }
 
-// The local triangles, from the library's shape generators only.
-litkit::Mesh shape_mesh(const litkit::Shape& shape) {
+// The local triangles: the library's shape generators for the built-in
+// shapes, object_mesh for the teapot and mesh files (positions and triangles
+// only; everything else is computed here).
+litkit::Mesh shape_mesh(const litkit::SceneObject& object) {
     return std::visit(
-        [](const auto& s) -> litkit::Mesh {
+        [&](const auto& s) -> litkit::Mesh {
             using S = std::decay_t<decltype(s)>;
             if constexpr (std::is_same_v<S, litkit::CubeShape>) {
                 return litkit::make_cube(s.size);
@@ -94,11 +108,10 @@ litkit::Mesh shape_mesh(const litkit::Shape& shape) {
             } else if constexpr (std::is_same_v<S, litkit::TorusShape>) {
                 return litkit::make_torus(s.major_radius, s.minor_radius, s.segments, s.sides);
             } else {
-                ADD_FAILURE() << "the reference supports cube, sphere and torus only";
-                return {};
+                return litkit::object_mesh(object);
             }
         },
-        shape);
+        object.shape);
 }
 
 // DD9's "one vertex": positions within 1e-6 × the local bounding-box diagonal.
@@ -311,7 +324,7 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
         object.reflection.value_or(scene.reflection.value_or(litkit::default_reflection));
     ref.material = to_reference(object.material);
 
-    const litkit::Mesh mesh = shape_mesh(object.shape);
+    const litkit::Mesh mesh = shape_mesh(object);
     for (const glm::vec3& p : mesh.positions) ref.positions.push_back(local_to_world(object, p));
     ref.triangles = mesh.triangles;
 
@@ -533,14 +546,19 @@ bool is_comparable(const ReferenceImage& ref, int i, int j) {
 struct Comparison {
     long pixels = 0;
     long counted = 0;
-    long matching = 0;
+    long matching = 0;    // counted pixels within 2/255 in every channel
+    long within_one = 0;  // counted pixels within 1/255 in every channel
     long reference_object_pixels = 0;
-    long rendered_object_pixels = 0;  // of those, how many the render did not leave background
+    long rendered_object_pixels = 0;      // of those, how many the render did not leave background
+    std::vector<long> pixels_per_object;  // reference pixels of each object
     int worst_difference = -1;
     int worst_i = 0, worst_j = 0;
     std::string worst;
 
     double matching_fraction() const { return counted ? double(matching) / double(counted) : 0.0; }
+    double within_one_fraction() const {
+        return counted ? double(within_one) / double(counted) : 0.0;
+    }
     double counted_fraction() const { return pixels ? double(counted) / double(pixels) : 0.0; }
 };
 
@@ -562,15 +580,18 @@ std::string describe_pixel(const ReferenceImage& ref, const litkit::Image& image
 }
 
 Comparison compare(const ReferenceImage& ref, const litkit::Image& image,
-                   const litkit::Rgb8& background) {
+                   const litkit::Rgb8& background, std::size_t object_count = 0) {
     Comparison result;
     result.pixels = long(ref.width) * ref.height;
+    result.pixels_per_object.assign(object_count, 0);
     for (int j = 0; j < ref.height; ++j) {
         for (int i = 0; i < ref.width; ++i) {
             const std::size_t at = ref.index(i, j);
             const std::uint8_t* got = image.pixel(i, j);
             if (ref.object[at] >= 0) {
                 ++result.reference_object_pixels;
+                if (std::size_t(ref.object[at]) < object_count)
+                    ++result.pixels_per_object[std::size_t(ref.object[at])];
                 if (got[0] != background[0] || got[1] != background[1] || got[2] != background[2])
                     ++result.rendered_object_pixels;
             }
@@ -580,6 +601,7 @@ Comparison compare(const ReferenceImage& ref, const litkit::Image& image,
             for (int c = 0; c < 3; ++c)
                 difference = std::max(difference, std::abs(int(got[c]) - int(ref.rgb[at][c])));
             if (difference <= 2) ++result.matching;
+            if (difference <= 1) ++result.within_one;
             if (difference > result.worst_difference) {
                 result.worst_difference = difference;
                 result.worst_i = i;
@@ -611,32 +633,51 @@ void dump_if_asked(const std::string& name, const ReferenceImage& ref, const lit
               image.rgb);
 }
 
-// Renders `scene` with the library and checks it against the reference.
+// Renders `scene` with the library and checks it against the reference: at
+// least 99.5% of the compared pixels within 1/255 in every channel.
 void expect_render_matches_reference(const litkit::Scene& scene, const std::string& name) {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
     const ReferenceImage ref = reference_render(scene);
+    const auto referenced = clock::now();
     litkit::RenderOptions options;
     options.threads = 2;
     const litkit::Image image = litkit::render(scene, options);
+    const auto rendered = clock::now();
     ASSERT_EQ(image.width, scene.output.width);
     ASSERT_EQ(image.height, scene.output.height);
     ASSERT_EQ(image.rgb.size(), std::size_t(image.width) * image.height * 3);
     dump_if_asked(name, ref, image);
 
-    const Comparison result = compare(ref, image, scene.output.background);
-    std::printf("[ reference ] %-40s counted %5.1f%% of pixels, %7.3f%% within 2/255, worst %d\n",
-                name.c_str(), 100.0 * result.counted_fraction(), 100.0 * result.matching_fraction(),
-                result.worst_difference);
+    const Comparison result = compare(ref, image, scene.output.background, scene.objects.size());
+    const auto ms = [](clock::duration duration) {
+        return std::chrono::duration<double, std::milli>(duration).count();
+    };
+    std::printf(
+        "[ reference ] %-40s %dx%d, counted %5.1f%% of pixels, %7.3f%% within 1/255, %7.3f%% "
+        "within 2/255, worst %d (reference %.0f ms, render %.0f ms)\n",
+        name.c_str(), image.width, image.height, 100.0 * result.counted_fraction(),
+        100.0 * result.within_one_fraction(), 100.0 * result.matching_fraction(),
+        result.worst_difference, ms(referenced - start), ms(rendered - referenced));
+    if (result.worst_difference > 1)
+        std::printf("[ reference ]   worst %s\n", result.worst.c_str());
 
-    // The object must be there, in both pictures.
+    // The objects must be there, in both pictures: every one of them in the
+    // reference, and the render must not leave their pixels at the background.
     EXPECT_GE(result.reference_object_pixels, result.pixels / 20)
-        << name << ": the reference sees too little of the object";
+        << name << ": the reference sees too little of the objects";
+    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        EXPECT_GE(result.pixels_per_object[o], 20) << name << ": the reference barely sees object "
+                                                   << o << " '" << scene.objects[o].name << "'";
     EXPECT_GE(result.rendered_object_pixels, result.reference_object_pixels * 9 / 10)
-        << name << ": the render leaves the object's pixels at the background colour";
+        << name << ": the render leaves the objects' pixels at the background colour";
     // Not vacuous: most of the picture is compared.
     EXPECT_GE(result.counted_fraction(), 0.30) << name << ": too few pixels away from edges";
-    EXPECT_GE(result.matching_fraction(), 0.995)
-        << name << ": " << (result.counted - result.matching) << " of " << result.counted
-        << " compared pixels differ by more than 2/255; worst " << result.worst;
+    EXPECT_GE(result.within_one_fraction(), 0.995)
+        << name << ": " << (result.counted - result.within_one) << " of " << result.counted
+        << " compared pixels (" << std::fixed << std::setprecision(3)
+        << 100.0 * (1.0 - result.within_one_fraction()) << "%) differ by more than 1/255; worst "
+        << result.worst_difference << ", " << result.worst;
 }
 
 // ---- Scenes ----
@@ -923,5 +964,80 @@ TEST(RenderMatchesReferenceScene, PerObjectModelOverrides) {
     scene.objects.push_back(box);
     expect_render_matches_reference(scene, "sphere_gouraud_cube_flat_overrides");
 }
+
+// ---- Every example scene against the reference ----
+
+// One scene of examples/: a *.toml directly in the folder, or a sub-folder
+// whose *.toml files together make one scene (examples/multi-file/).
+struct ExampleCase {
+    std::string name;
+    std::vector<std::filesystem::path> files;  // in sorted order
+
+    friend void PrintTo(const ExampleCase& c, std::ostream* out) { *out << c.name; }
+};
+
+std::vector<std::filesystem::path> toml_files_in(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+        if (entry.is_regular_file() && entry.path().extension() == ".toml")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::string test_name_of(std::string name) {
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+}
+
+std::vector<ExampleCase> every_example() {
+    const std::filesystem::path examples = std::filesystem::path(LITKIT_SOURCE_DIR) / "examples";
+    std::vector<ExampleCase> cases;
+    for (const auto& file : toml_files_in(examples))
+        cases.push_back({test_name_of(file.stem().string()), {file}});
+    // Sub-folders holding a scene split over several files.
+    std::vector<std::filesystem::path> folders;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(examples, error))
+        if (entry.is_directory()) folders.push_back(entry.path());
+    std::sort(folders.begin(), folders.end());
+    for (const auto& folder : folders) {
+        std::vector<std::filesystem::path> files = toml_files_in(folder);
+        if (!files.empty()) cases.push_back({test_name_of(folder.filename().string()), files});
+    }
+    return cases;
+}
+
+// The examples are all there: a scene missing from the listing would go
+// untested without this.
+TEST(RenderMatchesReferenceExample, FindsEveryExampleScene) {
+    const std::vector<ExampleCase> cases = every_example();
+    EXPECT_GE(cases.size(), 18u);
+    bool multi_file = false;
+    for (const ExampleCase& c : cases) multi_file |= c.name == "multi_file" && c.files.size() == 2;
+    EXPECT_TRUE(multi_file) << "examples/multi-file/ should be one scene of two files";
+}
+
+class RenderMatchesReferenceExample : public ::testing::TestWithParam<ExampleCase> {};
+
+// The fast path draws the same picture: every example, at a small size with
+// its aspect ratio kept, within 1/255 away from edges.
+TEST_P(RenderMatchesReferenceExample, Within1Of255AwayFromEdges) {
+    const ExampleCase& c = GetParam();
+    litkit::Scene scene = litkit::load_scene(c.files);
+    ASSERT_FALSE(scene.objects.empty()) << c.name;
+    const double aspect = double(scene.output.width) / double(scene.output.height);
+    scene.output.width = 200;
+    scene.output.height = int(std::lround(200.0 / aspect));
+    expect_render_matches_reference(scene, "example_" + c.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, RenderMatchesReferenceExample,
+                         ::testing::ValuesIn(every_example()),
+                         [](const ::testing::TestParamInfo<ExampleCase>& info) {
+                             return info.param.name;
+                         });
 
 }  // namespace
