@@ -16,7 +16,7 @@
 #   memory         peak resident set size of the 1080p runs (GNU time -v)
 #
 # Default: 5 rounds of 20 frames (about ten minutes on 2 cores). --quick:
-# one round of 3 frames, a smoke run for CI. Needs
+# one round of 3 frames, a smoke run for CI. Installs what it needs through
 # `scripts/install-deps.sh --bench`. Builds what it runs in build-bench/
 # (LITKIT_BENCH_BUILD overrides), with at most 2 parallel jobs. Raw numbers
 # go to build-bench/compare/. LITKIT_BENCH_HYPERFINE=0 uses the plain loop
@@ -44,6 +44,9 @@ while [ $# -gt 0 ]; do
 done
 
 # ---- build -----------------------------------------------------------------
+# One command from a clean checkout: install what the peer needs (apt; a
+# no-op when everything is there).
+"$root/scripts/install-deps.sh" --bench
 if ! pkg-config --exists epoxy 2>/dev/null; then
   echo "error: the OpenGL peer needs libepoxy, EGL and Mesa: run scripts/install-deps.sh --bench" >&2
   exit 1
