@@ -81,6 +81,18 @@ PreparedLight prepare_light(const Light& light) {
     return prepared;
 }
 
+glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lights,
+                       const MaterialT<float>& material, const glm::vec3& position,
+                       const glm::vec3& normal, const glm::vec3& eye) {
+    const Vec3<float> p = splat<float>(position);
+    const Vec3<float> n = splat<float>(normal);
+    const Vec3<float> v = normalize(splat<float>(eye) - p);
+    const Vec3<float> color = with_reflection(reflection, [&](auto model) {
+        return shade_point<decltype(model)::value>(lights, material, p, n, v);
+    });
+    return {color.x, color.y, color.z};
+}
+
 }  // namespace equations
 
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
@@ -90,26 +102,7 @@ glm::vec3 shade(Reflection reflection, const Material& material, std::span<const
     prepared.reserve(lights.size());
     for (const Light& light : lights) prepared.push_back(prepare_light(light));
 
-    const MaterialT<float> m = splat<float>(material);
-    const Vec3<float> p = splat<float>(position);
-    const Vec3<float> n = splat<float>(normal);
-    const Vec3<float> v = normalize(splat<float>(eye) - p);
-    Vec3<float> color{};
-    switch (reflection) {
-        case Reflection::Lambert:
-            color = shade_point<Reflection::Lambert>(prepared, m, p, n, v);
-            break;
-        case Reflection::HalfLambert:
-            color = shade_point<Reflection::HalfLambert>(prepared, m, p, n, v);
-            break;
-        case Reflection::Phong:
-            color = shade_point<Reflection::Phong>(prepared, m, p, n, v);
-            break;
-        case Reflection::BlinnPhong:
-            color = shade_point<Reflection::BlinnPhong>(prepared, m, p, n, v);
-            break;
-    }
-    return {color.x, color.y, color.z};
+    return shade_scalar(reflection, prepared, splat<float>(material), position, normal, eye);
 }
 
 unsigned char to_pixel(float intensity, float gamma) {

@@ -33,10 +33,7 @@ namespace litkit {
 namespace {
 
 using equations::PreparedLight;
-using equations::Vec3;
 
-Vec3<float> to_vec3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
-glm::vec3 to_glm(const Vec3<float>& v) { return {v.x, v.y, v.z}; }
 
 // Per-vertex data after the vertex stage. `varyings` holds the world position
 // and normal (Phong shading) or the unclamped colour (Gouraud; 3 used).
@@ -110,25 +107,11 @@ int clip_triangle(const std::array<ClipVertex, 3>& triangle, int varying_count,
     return count;
 }
 
-template <Reflection R>
-glm::vec3 light_at(std::span<const PreparedLight> lights, const equations::MaterialT<float>& m,
-                   const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye) {
-    Vec3<float> position = to_vec3(p);
-    Vec3<float> to_eye = equations::normalize(to_vec3(eye) - position);
-    return to_glm(equations::shade_point<R>(lights, m, position, to_vec3(n), to_eye));
-}
-
+// Lighting of one point with plain floats (vertex and flat stages).
 glm::vec3 light_with(Reflection reflection, std::span<const PreparedLight> lights,
                      const equations::MaterialT<float>& m, const glm::vec3& p, const glm::vec3& n,
                      const glm::vec3& eye) {
-    switch (reflection) {
-        case Reflection::Lambert: return light_at<Reflection::Lambert>(lights, m, p, n, eye);
-        case Reflection::HalfLambert:
-            return light_at<Reflection::HalfLambert>(lights, m, p, n, eye);
-        case Reflection::Phong: return light_at<Reflection::Phong>(lights, m, p, n, eye);
-        case Reflection::BlinnPhong: return light_at<Reflection::BlinnPhong>(lights, m, p, n, eye);
-    }
-    return {};
+    return equations::shade_scalar(reflection, lights, m, p, n, eye);
 }
 
 constexpr int band_height = 16;

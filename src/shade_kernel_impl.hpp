@@ -67,16 +67,9 @@ struct Impl {
     static void shade_phong(Reflection reflection, std::span<const equations::PreparedLight> lights,
                             const Material& material, const float eye[3], const SurfaceRun& surface,
                             const ColorRun& out) {
-        switch (reflection) {
-            case Reflection::Lambert:
-                return shade_run<Reflection::Lambert>(lights, material, eye, surface, out);
-            case Reflection::HalfLambert:
-                return shade_run<Reflection::HalfLambert>(lights, material, eye, surface, out);
-            case Reflection::Phong:
-                return shade_run<Reflection::Phong>(lights, material, eye, surface, out);
-            case Reflection::BlinnPhong:
-                return shade_run<Reflection::BlinnPhong>(lights, material, eye, surface, out);
-        }
+        equations::with_reflection(reflection, [&](auto model) {
+            shade_run<decltype(model)::value>(lights, material, eye, surface, out);
+        });
     }
 
     // Same arithmetic as litkit::to_pixel: clamp (NaN → 0), gamma, ·255,

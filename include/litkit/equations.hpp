@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <span>
+#include <type_traits>
 
 namespace litkit::equations {
 
@@ -192,6 +193,31 @@ struct PreparedLight {
 inline constexpr float spot_boundary_slack = 1e-6f;
 
 PreparedLight prepare_light(const Light& light);
+
+// The one place a run-time Reflection becomes a template argument: calls
+// f(std::integral_constant<Reflection, R>{}) for the model chosen. Adding a
+// reflection model adds its case here and its branch in reflection_terms.
+template <class F>
+decltype(auto) with_reflection(Reflection reflection, F&& f) {
+    switch (reflection) {
+        case Reflection::Lambert:
+            return f(std::integral_constant<Reflection, Reflection::Lambert>{});
+        case Reflection::HalfLambert:
+            return f(std::integral_constant<Reflection, Reflection::HalfLambert>{});
+        case Reflection::Phong:
+            break;
+        case Reflection::BlinnPhong:
+            return f(std::integral_constant<Reflection, Reflection::BlinnPhong>{});
+    }
+    return f(std::integral_constant<Reflection, Reflection::Phong>{});
+}
+
+// shade_point for one point with plain floats: the scalar path that
+// litkit::shade and the renderer's per-vertex and per-triangle stages share.
+// `normal` unit length; V is normalize(eye − position).
+glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lights,
+                       const MaterialT<float>& material, const glm::vec3& position,
+                       const glm::vec3& normal, const glm::vec3& eye);
 
 // I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S) at point p with
 // unit normal N and unit V (SPEC §4). Unclamped.
