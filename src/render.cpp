@@ -203,21 +203,10 @@ void Renderer::Impl::prepare() {
     const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
 
     for (const SceneObject& object : scene.objects) {
-        Mesh mesh = object_mesh(object);
-        std::vector<glm::vec3> local_normals = vertex_normals(mesh);
-        const glm::mat4 model = object_to_world(object);
-        // Rotation only: scale is uniform and positive, so normals just rotate.
-        const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
-
+        WorldMesh mesh = world_mesh(object);
         PreparedObject prepared;
-        prepared.positions.reserve(mesh.positions.size());
-        prepared.normals.reserve(mesh.positions.size());
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            prepared.positions.push_back(glm::vec3(model * glm::vec4(mesh.positions[i], 1.0f)));
-            glm::vec3 n = rotation * local_normals[i];
-            float length = glm::length(n);
-            prepared.normals.push_back(length > 0.0f ? n / length : n);
-        }
+        prepared.positions = std::move(mesh.positions);
+        prepared.normals = std::move(mesh.normals);
         prepared.triangles = std::move(mesh.triangles);
         prepared.face_normals.reserve(prepared.triangles.size());
         for (const auto& t : prepared.triangles) {

@@ -23,7 +23,9 @@
 
 #include "litkit/scene.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -980,6 +982,25 @@ Mesh object_mesh(const SceneObject& object) {
         Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
     };
     return std::visit(Build{}, object.shape);
+}
+
+WorldMesh world_mesh(const SceneObject& object) {
+    Mesh mesh = object_mesh(object);
+    const std::vector<glm::vec3> local_normals = vertex_normals(mesh);
+    const glm::mat4 model = object_to_world(object);
+    const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
+
+    WorldMesh world;
+    world.positions.reserve(mesh.positions.size());
+    world.normals.reserve(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        world.positions.push_back(glm::vec3(model * glm::vec4(mesh.positions[i], 1.0f)));
+        const glm::vec3 n = rotation * local_normals[i];
+        const float length = glm::length(n);
+        world.normals.push_back(length > 0.0f ? n / length : n);
+    }
+    world.triangles = std::move(mesh.triangles);
+    return world;
 }
 
 }  // namespace litkit

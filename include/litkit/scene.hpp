@@ -136,4 +136,15 @@ glm::mat4 object_to_world(const SceneObject& object);
 // The object's mesh in local coordinates (builds the shape or reads the file).
 Mesh object_mesh(const SceneObject& object);
 
+// An object's triangles in world space, as every backend draws them:
+// positions placed by object_to_world, and DD9 vertex normals (found in local
+// coordinates, where SPEC §2 welds positions, then rotated: the scale is
+// uniform and positive, so that is the same direction).
+struct WorldMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // unit, or zero where no triangle counts
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+WorldMesh world_mesh(const SceneObject& object);
+
 }  // namespace litkit
