@@ -6,22 +6,25 @@
 #   scripts/install-deps.sh --fuzz   the same, plus clang and its sanitizer
 #                                    and libFuzzer runtimes (a few hundred MB),
 #                                    which only scripts/fuzz.sh needs
-#   scripts/install-deps.sh --bench  the same, plus headless OpenGL (EGL, Mesa's
-#                                    llvmpipe, libepoxy) and hyperfine, which
-#                                    only bench/compare.sh and its OpenGL peer
-#                                    program (bench/gl_peer) need
+#   scripts/install-deps.sh --bench  the same, plus hyperfine and GNU time,
+#                                    which only bench/compare.sh needs
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxsimd-dev
+  # The OpenGL backend (litkit::gl) and the exported programs: EGL headless on
+  # Mesa's llvmpipe where there is no GPU, GL loaded through libepoxy.
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev
+  # Tests of the exports: glslangValidator checks the GLSL; the exported
+  # program's --window is built with SDL2 and shown on a virtual X display.
+  glslang-tools libsdl2-dev xvfb xauth
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)
-# bench/gl_peer: EGL headless (surfaceless) on Mesa's llvmpipe, GL loaded
-# through libepoxy; bench/compare.sh times whole runs with hyperfine and reads
-# peak memory with GNU time.
-bench_packages=(libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev hyperfine time)
+# bench/compare.sh times whole runs with hyperfine and reads peak memory with
+# GNU time.
+bench_packages=(hyperfine time)
 
 case "${1:-}" in
   "") ;;

@@ -10,12 +10,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "litkit/error.hpp"
+#include "litkit/export.hpp"
 #include "litkit/files.hpp"
+#include "litkit/gl_renderer.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
@@ -36,6 +40,7 @@ struct SceneArguments {
     std::optional<std::string> reflection;
     std::optional<std::string> shading;
     int threads = 0;
+    std::string backend = "cpu";
 };
 
 struct RenderArguments {
@@ -44,12 +49,22 @@ struct RenderArguments {
     bool yes = false;
 };
 
+struct ExportArguments {
+    SceneArguments scene;
+    std::string format;
+    std::string directory;
+    std::string name;
+    bool yes = false;
+    bool force = false;
+};
+
 struct BenchArguments {
     SceneArguments scene;
     int frames = 20;
 };
 
-void add_scene_options(CLI::App* command, SceneArguments& arguments) {
+// `rendering`: also the options that choose and tune a renderer.
+void add_scene_options(CLI::App* command, SceneArguments& arguments, bool rendering = true) {
     command->add_option("SCENE", arguments.scenes,
                         "Scene files (TOML), merged in order; none: the built-in default scene");
     command->add_option("--width", arguments.width, "Image width in pixels")
@@ -60,9 +75,48 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments) {
         ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
-    command->add_option("--threads", arguments.threads, "Threads (0: one per core)")
+    if (!rendering) return;
+    command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, 1024));
+    command->add_option("--backend", arguments.backend,
+                        "cpu: litkit's own renderer; gl: OpenGL 3.3 on a headless EGL context")
+        ->check(CLI::IsMember({"cpu", "gl"}))
+        ->capture_default_str();
 }
+
+// The renderer chosen with --backend; both draw the picture of SPEC §1-§4.
+class Backend {
+public:
+    Backend(const litkit::Scene& scene, const SceneArguments& arguments) {
+        const litkit::RenderOptions options{.threads = arguments.threads};
+        if (arguments.backend == "gl")
+            gl_ = std::make_unique<litkit::GlRenderer>(scene, options);
+        else
+            cpu_ = std::make_unique<litkit::Renderer>(scene, options);
+    }
+    void render_into(litkit::Image& image) {
+        if (gl_)
+            gl_->render_into(image);
+        else
+            cpu_->render_into(image);
+    }
+    std::size_t triangle_count() const {
+        return gl_ ? gl_->triangle_count() : cpu_->triangle_count();
+    }
+    std::string description() const {
+        if (gl_) return "OpenGL backend: " + gl_->description();
+        return "CPU backend: " + std::to_string(cpu_->thread_count()) + " threads";
+    }
+    // Pixels shaded in the last frame, where the backend counts them.
+    std::optional<std::size_t> shaded_pixel_count() const {
+        if (cpu_) return cpu_->shaded_pixel_count();
+        return std::nullopt;
+    }
+
+private:
+    std::unique_ptr<litkit::Renderer> cpu_;
+    std::unique_ptr<litkit::GlRenderer> gl_;
+};
 
 // A usage problem found after CLI11's own parsing (exit status 2).
 struct UsageError {
@@ -154,8 +208,9 @@ int run_render(const RenderArguments& arguments) {
     }
 
     const auto start = std::chrono::steady_clock::now();
-    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.scene.threads});
-    litkit::Image image = renderer.render();
+    Backend renderer(scene, arguments.scene);
+    litkit::Image image;
+    renderer.render_into(image);
     litkit::write_png(image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -180,7 +235,7 @@ int run_bench(const BenchArguments& arguments) {
 
     using clock = std::chrono::steady_clock;
     const auto setup_start = clock::now();
-    litkit::Renderer renderer(scene, litkit::RenderOptions{.threads = arguments.scene.threads});
+    Backend renderer(scene, arguments.scene);
     const double setup_ms =
         std::chrono::duration<double, std::milli>(clock::now() - setup_start).count();
     litkit::Image image;
@@ -196,16 +251,62 @@ int run_bench(const BenchArguments& arguments) {
     const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
     const std::vector<std::string>& files = arguments.scene.scenes;
     std::printf("scene: %s\n", files.empty() ? "(default)" : files.front().c_str());
-    std::printf("image: %dx%d, %zu triangles, %d threads\n", image.width, image.height,
-                renderer.triangle_count(), renderer.thread_count());
-    std::printf("setup: %.3f ms (meshes, normals, world space)\n", setup_ms);
-    std::printf("pixels shaded: %zu per frame (%.1f%% of the image)\n",
-                renderer.shaded_pixel_count(),
-                100.0 * static_cast<double>(renderer.shaded_pixel_count()) /
-                    (static_cast<double>(image.width) * image.height));
+    std::printf("renderer: %s\n", renderer.description().c_str());
+    std::printf("image: %dx%d, %zu triangles\n", image.width, image.height,
+                renderer.triangle_count());
+    std::printf("setup: %.3f ms (meshes, normals, world space%s)\n", setup_ms,
+                arguments.scene.backend == "gl" ? ", context, shaders, upload" : "");
+    if (const auto shaded = renderer.shaded_pixel_count()) {
+        std::printf("pixels shaded: %zu per frame (%.1f%% of the image)\n", *shaded,
+                    100.0 * static_cast<double>(*shaded) /
+                        (static_cast<double>(image.width) * image.height));
+    }
     std::printf("frames: %d, median %.3f ms, min %.3f ms\n", arguments.frames, median,
                 frame_ms.front());
     std::printf("median_frame_ms=%.3f fps=%.1f\n", median, 1000.0 / median);
+    return exit_success;
+}
+
+// "my scene.toml" → "my_scene"; the default scene → "default_scene".
+std::string program_name_for(const std::vector<std::string>& scenes) {
+    if (scenes.empty()) return "default_scene";
+    std::string name = fs::path(scenes.front()).stem().string();
+    for (char& c : name) {
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        if (!keep) c = '_';
+    }
+    if (name.empty() || (name[0] >= '0' && name[0] <= '9')) name = "scene_" + name;
+    return name;
+}
+
+int run_export(const ExportArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
+    const litkit::ExportOptions options{.replace_existing = arguments.force};
+    const fs::path directory = arguments.directory;
+    std::vector<fs::path> written;
+    std::string program;
+    try {
+        if (arguments.format == "glsl") {
+            written = litkit::export_glsl(scene, directory, options);
+        } else {
+            program = arguments.name.empty() ? program_name_for(arguments.scene.scenes) : arguments.name;
+            const std::string label = arguments.scene.scenes.empty()
+                                          ? std::string("(litkit's default scene)")
+                                          : arguments.scene.scenes.front();
+            written = litkit::export_cpp(scene, directory, program, label, options);
+        }
+    } catch (const litkit::IoError& error) {
+        if (error.reason() != "already exists") throw;
+        throw UsageError{"'" + error.path() + "' already exists; pass --force to replace it"};
+    } catch (const std::invalid_argument& error) {
+        throw UsageError{error.what()};
+    }
+    for (const fs::path& file : written) std::cout << "litkit: wrote " << file.string() << "\n";
+    if (!program.empty()) {
+        std::cout << "build and run it with:\n  "
+                  << litkit::export_cpp_instructions(directory, program) << "\n";
+    }
     return exit_success;
 }
 
@@ -249,6 +350,23 @@ int main(int argc, char** argv) {
     init->add_option("FILE", init_file, "File to write (default: scene.toml)");
     init->add_flag("-f,--force", init_force, "Replace the file if it exists");
 
+    ExportArguments export_arguments;
+    CLI::App* export_command = app.add_subcommand(
+        "export", "Write the scene as GLSL shaders or as a C++ program that draws it with OpenGL");
+    add_scene_options(export_command, export_arguments.scene, false);
+    export_command
+        ->add_option("--format", export_arguments.format,
+                     "glsl: the vertex and fragment shaders; cpp: main.cpp and CMakeLists.txt")
+        ->required()
+        ->check(CLI::IsMember({"glsl", "cpp"}));
+    export_command->add_option("-o,--output", export_arguments.directory, "Folder to write into")
+        ->required();
+    export_command->add_option("--name", export_arguments.name,
+                               "cpp: the program's name (default: the first scene's name)");
+    export_command->add_flag("-y,--yes", export_arguments.yes,
+                             "Use the default models (phong / phong) where [lighting] leaves one out");
+    export_command->add_flag("-f,--force", export_arguments.force, "Replace files that exist");
+
     BenchArguments bench_arguments;
     CLI::App* bench = app.add_subcommand(
         "bench", "Render frames into memory and report the time per frame");
@@ -270,12 +388,17 @@ int main(int argc, char** argv) {
         if (check->parsed()) return run_check(check_scenes);
         if (init->parsed()) return run_init(init_file, init_force);
         if (bench->parsed()) return run_bench(bench_arguments);
+        if (export_command->parsed()) return run_export(export_arguments);
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
         print_diagnostics(error.warnings());
         return exit_invalid;
     } catch (const litkit::IoError& error) {
         std::cerr << error.what() << "\n";
+        return exit_io;
+    } catch (const litkit::GlError& error) {
+        std::cerr << "error: " << error.what() << "\n"
+                  << "hint: render without OpenGL with --backend cpu\n";
         return exit_io;
     } catch (const UsageError& error) {
         std::cerr << "error: " << error.message << "\n";

@@ -1,8 +1,13 @@
 // Shades one point through the installed library and checks the number:
 // Lambert, N = L = (0, 1, 0), light 1 unit above, so I = k_d · C · 1 = 0.7.
+// Then draws the default scene with litkit::gl, the OpenGL backend, and
+// checks that the middle pixel is the cube's (not the black background).
+#include <litkit/gl_renderer.hpp>
 #include <litkit/lighting.hpp>
+#include <litkit/scene.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 int main() {
@@ -11,5 +16,12 @@ int main() {
     glm::vec3 color = litkit::shade(litkit::Reflection::Lambert, material, {&light, 1},
                                     {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 5.0f});
     std::printf("%.4f\n", color.x);
-    return std::fabs(color.x - 0.7f) < 1e-5f ? 0 : 1;
+    if (std::fabs(color.x - 0.7f) >= 1e-5f) return 1;
+
+    litkit::GlRenderer gl(litkit::default_scene());
+    const litkit::Image image = gl.render();
+    const std::uint8_t* middle = image.pixel(image.width / 2, image.height / 2);
+    std::printf("%s: middle pixel %d %d %d\n", gl.description().c_str(), middle[0], middle[1],
+                middle[2]);
+    return middle[0] > 0 ? 0 : 1;
 }

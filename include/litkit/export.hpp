@@ -1,0 +1,51 @@
+// Code generation (R7): the scene as shaders a user pastes into an OpenGL
+// program, or as a whole program a user builds and runs. Both draw what
+// `litkit render --backend gl` draws.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "litkit/lighting.hpp"
+#include "litkit/scene.hpp"
+
+namespace litkit {
+
+struct ExportOptions {
+    // Used where the scene leaves [lighting] out (as RenderOptions).
+    Reflection fallback_reflection = default_reflection;
+    Shading fallback_shading = default_shading;
+    // Off: a file that would be written and already exists stops the export
+    // (IoError with reason "already exists") before anything is written.
+    bool replace_existing = false;
+};
+
+// Writes, into `directory` (created if missing), a vertex and a fragment
+// shader for each reflection × shading pair the scene's objects use:
+// "<reflection>-<shading>.vert" and ".frag" (GLSL 3.30 core, the uniforms
+// they expect documented at their top), sized for the scene's lights. Each
+// file is written whole or not at all. Returns the paths written; throws
+// IoError.
+std::vector<std::filesystem::path> export_glsl(const Scene& scene,
+                                               const std::filesystem::path& directory,
+                                               const ExportOptions& options = {});
+
+// Writes, into `directory`, "main.cpp" and "CMakeLists.txt": a standalone
+// program named `program_name` (a C identifier) that draws the scene with
+// OpenGL 3.3 on a headless EGL context and writes a PNG, or shows it in a
+// window with --window (built where SDL2 is found). `scene_label` names the
+// scene in the program's comments. Returns the paths written; throws IoError
+// (also for an unreadable mesh file) or std::invalid_argument for a bad
+// program name.
+std::vector<std::filesystem::path> export_cpp(const Scene& scene,
+                                              const std::filesystem::path& directory,
+                                              const std::string& program_name,
+                                              const std::string& scene_label,
+                                              const ExportOptions& options = {});
+
+// The commands that build and run what export_cpp wrote into `directory`.
+std::string export_cpp_instructions(const std::filesystem::path& directory,
+                                    const std::string& program_name);
+
+}  // namespace litkit

@@ -1,0 +1,49 @@
+// The OpenGL backend (`litkit render --backend gl`): the picture of SPEC §1–§4
+// drawn by OpenGL 3.3 core on a headless EGL context (a GPU's driver where
+// there is one, Mesa's llvmpipe otherwise), with shaders from litkit/glsl.hpp.
+// Part of the separate library litkit::gl, so that the core library does not
+// depend on OpenGL.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "litkit/image.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+
+namespace litkit {
+
+// No OpenGL could be had (no EGL library, no display, no 3.3 context), or it
+// failed (a shader the driver rejects, an incomplete framebuffer); what()
+// says which and why.
+class GlError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class GlRenderer {
+public:
+    // Creates the context, compiles the programs and uploads every object's
+    // world-space vertices. Throws GlError, or IoError for an unreadable
+    // mesh file. `options.threads` and `options.kernels` do not apply.
+    explicit GlRenderer(const Scene& scene, RenderOptions options = {});
+    ~GlRenderer();
+    GlRenderer(const GlRenderer&) = delete;
+    GlRenderer& operator=(const GlRenderer&) = delete;
+
+    // Draws one frame at the scene's output size and reads it back.
+    Image render();
+    void render_into(Image& image);
+
+    std::size_t triangle_count() const;
+    // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6".
+    std::string description() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace litkit

@@ -1,0 +1,322 @@
+#include "litkit/export.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+#include "export/embedded_text.hpp"
+#include "gl_scene.hpp"
+#include "litkit/error.hpp"
+#include "litkit/files.hpp"
+#include "litkit/glsl.hpp"
+
+namespace litkit {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using ModelPair = std::pair<Reflection, Shading>;
+
+struct ObjectModels {
+    std::vector<ModelPair> pairs;  // each once, in order of first use
+    std::vector<int> program;      // per object, an index into `pairs`
+};
+
+ObjectModels object_models(const Scene& scene, const ExportOptions& options) {
+    const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
+    const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
+    ObjectModels models;
+    for (const SceneObject& object : scene.objects) {
+        const ModelPair pair{object.reflection.value_or(scene_reflection),
+                             object.shading.value_or(scene_shading)};
+        std::size_t index = 0;
+        while (index < models.pairs.size() && models.pairs[index] != pair) ++index;
+        if (index == models.pairs.size()) models.pairs.push_back(pair);
+        models.program.push_back(static_cast<int>(index));
+    }
+    return models;
+}
+
+int light_capacity(const Scene& scene) { return std::max<int>(1, static_cast<int>(scene.lights.size())); }
+
+// "blinn-phong" + "flat" → "blinn-phong-flat"; as an identifier "blinn_phong_flat".
+std::string pair_file_stem(const ModelPair& pair) {
+    return std::string(to_string(pair.first)) + "-" + std::string(to_string(pair.second));
+}
+std::string pair_identifier(const ModelPair& pair) {
+    std::string name = pair_file_stem(pair);
+    for (char& c : name)
+        if (c == '-') c = '_';
+    return name;
+}
+
+void make_directory(const fs::path& directory) {
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error || !fs::is_directory(directory))
+        throw IoError(directory.string(),
+                      error ? "cannot create the folder: " + error.message() : "not a folder", {},
+                      IoError::Access::Write);
+}
+
+// A float literal that reads back as the same float: "0.5f", "1.0f", "-3e-07f".
+std::string float_literal(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+    std::string literal = text;
+    if (literal.find_first_of(".en") == std::string::npos) literal += ".0";
+    return literal + "f";
+}
+
+// "a, b, c" (appended piece by piece: GCC 12 warns falsely on "literal" + string&&).
+std::string vec3_components(const glm::vec3& v) {
+    std::string text = float_literal(v.x);
+    text += ", ";
+    text += float_literal(v.y);
+    text += ", ";
+    text += float_literal(v.z);
+    return text;
+}
+
+std::string wrapped(std::string_view open, const std::string& text, std::string_view close) {
+    std::string out(open);
+    out += text;
+    out += close;
+    return out;
+}
+
+std::string vec3_literal(const glm::vec3& v) { return wrapped("glm::vec3(", vec3_components(v), ")"); }
+
+// `{a, b, c}` for a brace-initialised glm::vec3 member.
+std::string vec3_braces(const glm::vec3& v) { return wrapped("{", vec3_components(v), "}"); }
+
+// Text safe inside a C++ comment or string literal.
+std::string printable(std::string_view text) {
+    std::string out;
+    for (char c : text) out += (c >= 32 && c < 127 && c != '"' && c != '\\') ? c : '_';
+    return out;
+}
+
+void replace_all(std::string& text, std::string_view marker, std::string_view value) {
+    for (std::size_t at = text.find(marker); at != std::string::npos;
+         at = text.find(marker, at + value.size()))
+        text.replace(at, marker.size(), value);
+}
+
+std::string light_kind_name(equations::PreparedLight::Kind kind) {
+    switch (kind) {
+        case equations::PreparedLight::Kind::Ambient:
+            return "LIGHT_AMBIENT";
+        case equations::PreparedLight::Kind::Directional:
+            return "LIGHT_DIRECTIONAL";
+        case equations::PreparedLight::Kind::Point:
+            return "LIGHT_POINT";
+        case equations::PreparedLight::Kind::Spot:
+            break;
+    }
+    return "LIGHT_SPOT";
+}
+
+std::string lights_source(const Scene& scene) {
+    const std::vector<equations::PreparedLight> lights = detail::prepared_lights(scene);
+    std::string out;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const equations::PreparedLight& l = lights[i];
+        const std::string& name = scene.lights[i].name;
+        out += "    // light " + std::to_string(i) + (name.empty() ? "" : " \"" + printable(name) + "\"") +
+               "\n";
+        out += "    {" + light_kind_name(l.kind) + ", " + vec3_braces(l.radiance) + ", " +
+               vec3_braces(l.position) + ", " + vec3_braces(l.direction) + ", " +
+               vec3_braces(l.attenuation) + ", " + float_literal(l.cos_cutoff) + ", " +
+               float_literal(l.exponent) + "},\n";
+    }
+    return out;
+}
+
+std::string shaders_source(const ObjectModels& models, int capacity) {
+    std::string out =
+        "// The source of one program: a vertex and a fragment shader.\n"
+        "struct ProgramSource {\n    const char* vertex;\n    const char* fragment;\n};\n\n";
+    std::string table = "const std::vector<ProgramSource> programs = {\n";
+    for (std::size_t i = 0; i < models.pairs.size(); ++i) {
+        const ModelPair& pair = models.pairs[i];
+        const glsl::Shaders shaders = glsl::generate(pair.first, pair.second, capacity);
+        const std::string id = pair_identifier(pair);
+        out += "// Program " + std::to_string(i) + ": reflection " + std::string(to_string(pair.first)) +
+               ", shading " + std::string(to_string(pair.second)) + ".\n";
+        out += "const char* const " + id + "_vertex = R\"glsl(" + shaders.vertex + ")glsl\";\n\n";
+        out += "const char* const " + id + "_fragment = R\"glsl(" + shaders.fragment + ")glsl\";\n\n";
+        table += "    {" + id + "_vertex, " + id + "_fragment},\n";
+    }
+    return out + table + "};\n";
+}
+
+struct GeometrySource {
+    std::string arrays;   // the data
+    std::string objects;  // the ObjectData table's rows
+};
+
+GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
+    GeometrySource out;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
+        const detail::GlObject gl = detail::gl_object(object, pair.first, pair.second);
+        const std::string id = "object" + std::to_string(i);
+        const std::string label = (object.name.empty() ? std::string(shape_type_name(object.shape))
+                                                       : printable(object.name));
+        const bool flat = gl.indices.empty();
+        const std::size_t per_vertex = flat ? 9 : 6;
+
+        out.arrays += "// " + id + " \"" + label + "\": " + std::string(shape_type_name(object.shape)) +
+                      ", " + std::to_string(gl.triangles) + " triangles\n";
+        out.arrays += "const float " + id + "_vertices[] = {\n";
+        for (std::size_t v = 0; v < gl.vertices.size(); v += per_vertex) {
+            out.arrays += "   ";
+            for (std::size_t k = 0; k < per_vertex; ++k) {
+                out.arrays += (k % 3 == 0 && k > 0) ? "  " : " ";
+                out.arrays += float_literal(gl.vertices[v + k]) + ",";
+            }
+            out.arrays += "\n";
+        }
+        out.arrays += "};\n";
+        if (!flat) {
+            out.arrays += "const std::uint32_t " + id + "_indices[] = {\n";
+            for (std::size_t t = 0; t < gl.indices.size(); t += 3) {
+                out.arrays += "    " + std::to_string(gl.indices[t]) + ", " +
+                              std::to_string(gl.indices[t + 1]) + ", " +
+                              std::to_string(gl.indices[t + 2]) + ",\n";
+            }
+            out.arrays += "};\n";
+        }
+        out.arrays += "\n";
+
+        const Material& m = object.material;
+        out.objects += "    {\"" + label + "\", " + std::to_string(models.program[i]) + ", {" +
+                       vec3_braces(m.color) + ", " + float_literal(m.ka) + ", " +
+                       float_literal(m.kd) + ", " + float_literal(m.ks) + ", " +
+                       float_literal(m.shininess) + "},\n     " + id + "_vertices, std::size(" + id +
+                       "_vertices), " + (flat ? "nullptr, 0" : id + "_indices, std::size(" + id + "_indices)") +
+                       "},\n";
+    }
+    return out;
+}
+
+// Before writing anything: every file is new, or replacing is allowed.
+void check_new(const std::vector<fs::path>& files, const ExportOptions& options) {
+    if (options.replace_existing) return;
+    for (const fs::path& file : files) {
+        std::error_code error;
+        if (fs::exists(fs::symlink_status(file, error)))
+            throw IoError(file.string(), "already exists", {}, IoError::Access::Write);
+    }
+}
+
+bool is_identifier(const std::string& name) {
+    if (name.empty() || name.size() > 64) return false;
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        const char c = name[i];
+        const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+        if (!letter && !(i > 0 && c >= '0' && c <= '9')) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
+                                  const ExportOptions& options) {
+    std::vector<fs::path> files;
+    std::vector<std::string> texts;
+    for (const ModelPair& pair : object_models(scene, options).pairs) {
+        glsl::Shaders shaders = glsl::generate(pair.first, pair.second, light_capacity(scene));
+        const std::string stem = pair_file_stem(pair);
+        files.push_back(directory / (stem + ".vert"));
+        texts.push_back(std::move(shaders.vertex));
+        files.push_back(directory / (stem + ".frag"));
+        texts.push_back(std::move(shaders.fragment));
+    }
+    check_new(files, options);
+    make_directory(directory);
+    for (std::size_t i = 0; i < files.size(); ++i) write_file_atomically(files[i], texts[i]);
+    return files;
+}
+
+std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
+                                 const std::string& program_name, const std::string& scene_label,
+                                 const ExportOptions& options) {
+    if (!is_identifier(program_name))
+        throw std::invalid_argument("program name '" + program_name +
+                                    "' is not a C identifier (letters, digits, _)");
+    const ObjectModels models = object_models(scene, options);
+    const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first
+
+    std::string program = detail::program_template_text;
+    const Observer& o = scene.observer;
+    const auto& bg = scene.output.background;
+    replace_all(program, "{{CORE}}", detail::opengl_core_text);
+    replace_all(program, "{{SHADERS}}", shaders_source(models, light_capacity(scene)));
+    replace_all(program, "{{WIDTH}}", std::to_string(scene.output.width));
+    replace_all(program, "{{HEIGHT}}", std::to_string(scene.output.height));
+    replace_all(program, "{{BACKGROUND}}",
+                "glm::vec3(" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " +
+                    std::to_string(bg[2]) + ") / 255.0f");
+    replace_all(program, "{{GAMMA}}", float_literal(scene.output.gamma));
+    replace_all(program, "{{EYE}}", vec3_literal(o.position));
+    replace_all(program, "{{LOOK_AT}}", vec3_literal(o.look_at));
+    replace_all(program, "{{UP}}", vec3_literal(o.up));
+    replace_all(program, "{{FOV}}", float_literal(o.fov_degrees));
+    replace_all(program, "{{NEAR}}", float_literal(o.near));
+    replace_all(program, "{{FAR}}", float_literal(o.far));
+    replace_all(program, "{{LIGHTS}}", lights_source(scene));
+    replace_all(program, "{{GEOMETRY}}", geometry.arrays);
+    replace_all(program, "{{OBJECTS}}", geometry.objects);
+    // Last: these may appear in the texts pasted above.
+    replace_all(program, "{{SCENE}}", wrapped("\"", printable(scene_label), "\""));
+    replace_all(program, "{{VERSION}}", LITKIT_VERSION);
+    replace_all(program, "{{NAME}}", program_name);
+
+    const std::string cmake =
+        "# Builds " + program_name + " (generated by litkit " LITKIT_VERSION
+        ", `litkit export --format cpp`).\n"
+        "#   cmake -S . -B build && cmake --build build\n"
+        "cmake_minimum_required(VERSION 3.16)\n"
+        "project(" + program_name + " LANGUAGES CXX)\n\n"
+        "set(CMAKE_CXX_STANDARD 17)\n"
+        "set(CMAKE_CXX_STANDARD_REQUIRED ON)\n"
+        "if(NOT CMAKE_BUILD_TYPE)\n"
+        "    set(CMAKE_BUILD_TYPE Release)\n"
+        "endif()\n\n"
+        "find_package(PkgConfig REQUIRED)\n"
+        "pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)  # loads EGL and OpenGL\n"
+        "find_package(PNG REQUIRED)\n"
+        "find_package(glm REQUIRED)\n"
+        "find_package(SDL2 QUIET)  # optional: --window\n\n"
+        "add_executable(" + program_name + " main.cpp)\n"
+        "target_link_libraries(" + program_name + " PRIVATE PkgConfig::EPOXY PNG::PNG glm::glm)\n"
+        "if(SDL2_FOUND)\n"
+        "    target_link_libraries(" + program_name + " PRIVATE SDL2::SDL2)\n"
+        "    target_compile_definitions(" + program_name + " PRIVATE WITH_SDL2)\n"
+        "else()\n"
+        "    message(STATUS \"SDL2 not found: " + program_name +
+        " will have no --window (Debian: libsdl2-dev)\")\n"
+        "endif()\n";
+
+    const std::vector<fs::path> written{directory / "main.cpp", directory / "CMakeLists.txt"};
+    check_new(written, options);
+    make_directory(directory);
+    write_file_atomically(written[0], program);
+    write_file_atomically(written[1], cmake);
+    return written;
+}
+
+std::string export_cpp_instructions(const fs::path& directory, const std::string& program_name) {
+    const std::string dir = directory.string();
+    return "cmake -S " + dir + " -B " + dir + "/build && cmake --build " + dir + "/build && " + dir +
+           "/build/" + program_name;
+}
+
+}  // namespace litkit

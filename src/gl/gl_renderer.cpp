@@ -1,0 +1,152 @@
+#include "litkit/gl_renderer.hpp"
+
+#include <dlfcn.h>
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../gl_scene.hpp"
+#include "litkit/glsl.hpp"
+
+namespace litkit {
+
+namespace {
+namespace core {
+#include "opengl_core.inc"
+}  // namespace core
+
+// libepoxy loads libEGL on first use and aborts the process if it cannot;
+// looking first turns that into an error the caller can report.
+void require_egl_library() {
+    if (dlopen("libEGL.so.1", RTLD_NOW | RTLD_GLOBAL) == nullptr) {
+        const char* why = dlerror();
+        throw GlError(std::string("OpenGL is not available: cannot load libEGL.so.1 (") +
+                      (why ? why : "not found") + ")");
+    }
+}
+
+core::LightData light_data(const equations::PreparedLight& light) {
+    return {static_cast<int>(light.kind), light.radiance,  light.position, light.direction,
+            light.attenuation,            light.cos_cutoff, light.exponent};
+}
+
+core::MaterialData material_data(const Material& material) {
+    return {material.color, material.ka, material.kd, material.ks, material.shininess};
+}
+
+std::string gl_string(GLenum name) {
+    const GLubyte* text = glGetString(name);
+    return text ? reinterpret_cast<const char*>(text) : "?";
+}
+
+}  // namespace
+
+struct GlRenderer::Impl {
+    // Declaration order is destruction order reversed: GL objects go before
+    // the context that owns them.
+    std::optional<core::HeadlessContext> context;
+    std::map<std::pair<Reflection, Shading>, GLuint> programs;
+    std::vector<core::GpuMesh> meshes;
+    std::vector<core::DrawItem> items;
+    std::vector<core::LightData> lights;
+    std::optional<core::OffscreenTarget> target;
+    core::FrameSettings frame{};
+    std::size_t triangles = 0;
+
+    ~Impl() {
+        if (!context) return;
+        target.reset();
+        for (core::GpuMesh& mesh : meshes) core::release_mesh(mesh);
+        for (const auto& [key, program] : programs) glDeleteProgram(program);
+    }
+};
+
+GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::make_unique<Impl>()) {
+    require_egl_library();
+    Impl& gl = *impl_;
+    try {
+        gl.context.emplace();
+    } catch (const std::runtime_error& error) {
+        throw GlError(std::string("OpenGL is not available: ") + error.what());
+    }
+    try {
+        for (const equations::PreparedLight& light : detail::prepared_lights(scene))
+            gl.lights.push_back(light_data(light));
+        const int capacity = std::max<int>(1, static_cast<int>(gl.lights.size()));
+
+        const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
+        const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
+        gl.meshes.reserve(scene.objects.size());
+        for (const SceneObject& object : scene.objects) {
+            const Reflection reflection = object.reflection.value_or(scene_reflection);
+            const Shading shading = object.shading.value_or(scene_shading);
+            auto [found, added] = gl.programs.try_emplace({reflection, shading}, 0);
+            if (added) {
+                const glsl::Shaders shaders = glsl::generate(reflection, shading, capacity);
+                found->second = core::link_program(shaders.vertex, shaders.fragment);
+            }
+            const detail::GlObject data = detail::gl_object(object, reflection, shading);
+            gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
+            gl.triangles += data.triangles;
+        }
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            gl.items.push_back({gl.programs.at({scene.objects[i].reflection.value_or(scene_reflection),
+                                                scene.objects[i].shading.value_or(scene_shading)}),
+                                &gl.meshes[i], material_data(scene.objects[i].material)});
+
+        const Observer& o = scene.observer;
+        const float aspect =
+            static_cast<float>(scene.output.width) / static_cast<float>(scene.output.height);
+        gl.frame.view_projection =
+            core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
+        gl.frame.eye = o.position;
+        gl.frame.background = glm::vec3(scene.output.background[0], scene.output.background[1],
+                                        scene.output.background[2]) /
+                              255.0f;
+        gl.frame.gamma = scene.output.gamma;
+        gl.target.emplace(scene.output.width, scene.output.height);
+    } catch (const std::runtime_error& error) {
+        if (dynamic_cast<const IoError*>(&error)) throw;
+        throw GlError(error.what());
+    }
+}
+
+GlRenderer::~GlRenderer() = default;
+
+Image GlRenderer::render() {
+    Image image;
+    render_into(image);
+    return image;
+}
+
+void GlRenderer::render_into(Image& image) {
+    Impl& gl = *impl_;
+    try {
+        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
+    } catch (const std::runtime_error& error) {
+        throw GlError(error.what());
+    }
+    if (image.width != gl.target->width() || image.height != gl.target->height())
+        image = Image(gl.target->width(), gl.target->height());
+    gl.target->read_rgb(image.rgb.data());
+}
+
+std::size_t GlRenderer::triangle_count() const { return impl_->triangles; }
+
+std::string GlRenderer::description() const {
+    return gl_string(GL_RENDERER) + ", OpenGL " + gl_string(GL_VERSION);
+}
+
+}  // namespace litkit

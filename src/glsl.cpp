@@ -1,0 +1,877 @@
+#include "litkit/glsl.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+
+#include "glsl_expr.hpp"
+#include "litkit/equations.hpp"
+
+namespace litkit::glsl {
+
+// ---- Expr: building the DAG ----
+
+namespace {
+
+using Op = Node::Op;
+
+NodePtr make_node(Op op, const NodePtr& a = nullptr, const NodePtr& b = nullptr,
+                  const NodePtr& c = nullptr) {
+    auto node = std::make_shared<Node>();
+    node->op = op;
+    node->args = {a, b, c};
+    return node;
+}
+
+int arity(Op op) {
+    switch (op) {
+        case Op::Literal:
+        case Op::Variable:
+            return 0;
+        case Op::Negate:
+        case Op::Sqrt:
+            return 1;
+        case Op::Select:
+            return 3;
+        default:
+            return 2;
+    }
+}
+
+bool is_leaf(Op op) { return arity(op) == 0; }
+
+bool is_comparison(Op op) {
+    return op == Op::Less || op == Op::LessEqual || op == Op::Greater || op == Op::GreaterEqual;
+}
+
+}  // namespace
+
+Expr::Expr(float value) {
+    auto node = std::make_shared<Node>();
+    node->op = Op::Literal;
+    node->value = value;
+    node_ = std::move(node);
+}
+
+Expr Expr::variable(std::string name) {
+    auto node = std::make_shared<Node>();
+    node->op = Op::Variable;
+    node->name = std::move(name);
+    return Expr(NodePtr(std::move(node)));
+}
+
+Expr operator+(const Expr& a, const Expr& b) {
+    return Expr(make_node(Op::Add, a.node(), b.node()));
+}
+Expr operator-(const Expr& a, const Expr& b) {
+    return Expr(make_node(Op::Subtract, a.node(), b.node()));
+}
+Expr operator*(const Expr& a, const Expr& b) {
+    return Expr(make_node(Op::Multiply, a.node(), b.node()));
+}
+Expr operator/(const Expr& a, const Expr& b) {
+    return Expr(make_node(Op::Divide, a.node(), b.node()));
+}
+Expr operator-(const Expr& a) { return Expr(make_node(Op::Negate, a.node())); }
+Mask operator<(const Expr& a, const Expr& b) {
+    return Mask(make_node(Op::Less, a.node(), b.node()));
+}
+Mask operator<=(const Expr& a, const Expr& b) {
+    return Mask(make_node(Op::LessEqual, a.node(), b.node()));
+}
+Mask operator>(const Expr& a, const Expr& b) {
+    return Mask(make_node(Op::Greater, a.node(), b.node()));
+}
+Mask operator>=(const Expr& a, const Expr& b) {
+    return Mask(make_node(Op::GreaterEqual, a.node(), b.node()));
+}
+Expr select(const Mask& mask, const Expr& if_true, const Expr& if_false) {
+    return Expr(make_node(Op::Select, mask.node(), if_true.node(), if_false.node()));
+}
+Expr max(const Expr& a, const Expr& b) { return Expr(make_node(Op::Max, a.node(), b.node())); }
+Expr pow(const Expr& base, const Expr& exponent) {
+    return Expr(make_node(Op::Pow, base.node(), exponent.node()));
+}
+Expr sqrt(const Expr& a) { return Expr(make_node(Op::Sqrt, a.node())); }
+
+equations::Vec3<Expr> vec3_variable(const std::string& name) {
+    return {Expr::variable(name + ".x"), Expr::variable(name + ".y"), Expr::variable(name + ".z")};
+}
+
+equations::MaterialT<Expr> material_variable(const std::string& name) {
+    return {vec3_variable(name + ".color"), Expr::variable(name + ".ka"),
+            Expr::variable(name + ".kd"), Expr::variable(name + ".ks"),
+            Expr::variable(name + ".shininess")};
+}
+
+// ---- Printing ----
+
+std::string float_literal(float value) {
+    if (!std::isfinite(value)) {
+        throw std::invalid_argument("GLSL has no literal for " + std::to_string(value));
+    }
+    // The shortest text that reads back as `value`.
+    char buffer[64];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    if (error != std::errc{}) throw std::logic_error("float_literal: to_chars failed");
+    std::string text(buffer, end);
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text;
+}
+
+namespace {
+
+// C/GLSL precedence, higher binds tighter.
+constexpr int atomic = 100;  // literal, variable, call, parenthesised
+constexpr int unary = 90;
+constexpr int multiplicative = 80;
+constexpr int additive = 70;
+constexpr int relational = 60;
+
+struct Printed {
+    std::string text;
+    int precedence;
+};
+
+std::string parenthesised(const Printed& printed, bool needed) {
+    return needed ? "(" + printed.text + ")" : printed.text;
+}
+
+class Printer {
+public:
+    Printer(const PrintOptions& options, const std::unordered_map<const Node*, std::string>& names)
+        : options_(options), names_(names) {}
+
+    Printed print(const Node& node) const {
+        if (auto named = names_.find(&node); named != names_.end()) return {named->second, atomic};
+        const auto arg = [&](int i) { return print(*node.args[static_cast<std::size_t>(i)]); };
+        switch (node.op) {
+            case Op::Literal:
+                return {float_literal(node.value), std::signbit(node.value) ? unary : atomic};
+            case Op::Variable:
+                return {node.name, atomic};
+            case Op::Add:
+                return binary(node, " + ", additive);
+            case Op::Subtract:
+                return binary(node, " - ", additive);
+            case Op::Multiply:
+                return binary(node, " * ", multiplicative);
+            case Op::Divide:
+                return binary(node, " / ", multiplicative);
+            case Op::Less:
+                return binary(node, " < ", relational);
+            case Op::LessEqual:
+                return binary(node, " <= ", relational);
+            case Op::Greater:
+                return binary(node, " > ", relational);
+            case Op::GreaterEqual:
+                return binary(node, " >= ", relational);
+            case Op::Negate: {
+                // "-(-x)", never "--x".
+                const Printed operand = arg(0);
+                return {"-" + parenthesised(operand, operand.precedence <= unary), unary};
+            }
+            case Op::Select:
+                return {"(" + arg(0).text + " ? " + arg(1).text + " : " + arg(2).text + ")",
+                        atomic};
+            case Op::Max:
+                return {"max(" + arg(0).text + ", " + arg(1).text + ")", atomic};
+            case Op::Pow:
+                return {options_.pow_function + "(" + arg(0).text + ", " + arg(1).text + ")",
+                        atomic};
+            case Op::Sqrt:
+                return {"sqrt(" + arg(0).text + ")", atomic};
+        }
+        throw std::logic_error("glsl::Printer: unknown operation");
+    }
+
+private:
+    // Left-associative: a right operand of the same precedence keeps its
+    // parentheses, so a - (b - c) and a * (b * c) print as written.
+    Printed binary(const Node& node, std::string_view op, int precedence) const {
+        const Printed left = print(*node.args[0]);
+        const Printed right = print(*node.args[1]);
+        return {parenthesised(left, left.precedence < precedence) + std::string(op) +
+                    parenthesised(right, right.precedence <= precedence),
+                precedence};
+    }
+
+    const PrintOptions& options_;
+    const std::unordered_map<const Node*, std::string>& names_;
+};
+
+bool same_structure(const Node& a, const Node& b) {
+    if (&a == &b) return true;
+    if (a.op != b.op) return false;
+    switch (a.op) {
+        case Op::Literal:
+            return std::memcmp(&a.value, &b.value, sizeof a.value) == 0;
+        case Op::Variable:
+            return a.name == b.name;
+        default:
+            for (int i = 0; i < arity(a.op); ++i) {
+                const auto k = static_cast<std::size_t>(i);
+                if (!same_structure(*a.args[k], *b.args[k])) return false;
+            }
+            return true;
+    }
+}
+
+}  // namespace
+
+std::string to_glsl(const Expr& value, const PrintOptions& options) {
+    const std::unordered_map<const Node*, std::string> no_names;
+    return Printer(options, no_names).print(*value.node()).text;
+}
+
+std::string to_glsl(const Mask& value, const PrintOptions& options) {
+    const std::unordered_map<const Node*, std::string> no_names;
+    return Printer(options, no_names).print(*value.node()).text;
+}
+
+namespace {
+
+struct Statements {
+    std::string temporaries;  // `float t0 = ...;` lines
+    std::string assignments;  // `target = ...;` or `return ...;` lines
+};
+
+Statements statements(std::span<const Output> outputs, std::span<const Hint> hints,
+                      const PrintOptions& options, std::string_view indent) {
+    // How many parents (or outputs) use each node.
+    std::unordered_map<const Node*, int> uses;
+    const auto count = [&](const auto& self, const Node& node) -> void {
+        if (++uses[&node] > 1) return;
+        for (int i = 0; i < arity(node.op); ++i)
+            self(self, *node.args[static_cast<std::size_t>(i)]);
+    };
+    for (const Output& output : outputs) count(count, *output.value.node());
+
+    std::unordered_map<const Node*, std::string> names;
+    std::unordered_set<std::string> taken;
+    const auto unique = [&](const std::string& base) {
+        std::string name = base;
+        for (int k = 1; taken.count(name) != 0; ++k) name = base + "_" + std::to_string(k);
+        taken.insert(name);
+        return name;
+    };
+    const auto hint_for = [&](const Node& node) -> const Hint* {
+        for (const Hint& hint : hints)
+            if (same_structure(node, *hint.pattern.node())) return &hint;
+        return nullptr;
+    };
+    int unnamed = 0;
+    const auto next_unnamed = [&] {
+        std::string name;
+        do name = "t" + std::to_string(unnamed++);
+        while (taken.count(name) != 0);
+        return unique(name);
+    };
+
+    // Temporaries in dependency order: children before parents.
+    const Printer printer(options, names);
+    Statements result;
+    std::unordered_set<const Node*> visited;
+    const auto emit = [&](const auto& self, const Node& node) -> void {
+        if (!visited.insert(&node).second) return;
+        for (int i = 0; i < arity(node.op); ++i)
+            self(self, *node.args[static_cast<std::size_t>(i)]);
+        if (is_leaf(node.op)) return;
+        const Hint* hint = hint_for(node);
+        if (uses[&node] > 1 || hint != nullptr) {
+            const std::string definition = printer.print(node).text;
+            const std::string name = hint != nullptr ? unique(hint->name) : next_unnamed();
+            result.temporaries += std::string(indent) +
+                                  (is_comparison(node.op) ? "bool " : "float ") + name + " = " +
+                                  definition + ";\n";
+            names.emplace(&node, name);
+        }
+    };
+    for (const Output& output : outputs) emit(emit, *output.value.node());
+
+    for (const Output& output : outputs) {
+        const std::string value = printer.print(*output.value.node()).text;
+        result.assignments +=
+            std::string(indent) +
+            (output.target.empty() ? "return " + value : output.target + " = " + value) + ";\n";
+    }
+    return result;
+}
+
+}  // namespace
+
+std::string print_statements(std::span<const Output> outputs, std::span<const Hint> hints,
+                             const PrintOptions& options, std::string_view indent) {
+    const Statements printed = statements(outputs, hints, options, indent);
+    return printed.temporaries + printed.assignments;
+}
+
+// ---- Evaluation ----
+
+namespace {
+
+float evaluate_node(const Node& node, const Bindings& bindings,
+                    std::unordered_map<const Node*, float>& memo) {
+    if (auto known = memo.find(&node); known != memo.end()) return known->second;
+    const auto arg = [&](int i) {
+        return evaluate_node(*node.args[static_cast<std::size_t>(i)], bindings, memo);
+    };
+    float result = 0.0f;
+    switch (node.op) {
+        case Op::Literal:
+            result = node.value;
+            break;
+        case Op::Variable: {
+            const auto bound = bindings.find(node.name);
+            if (bound == bindings.end())
+                throw std::out_of_range("glsl::evaluate: no value for " + node.name);
+            result = bound->second;
+            break;
+        }
+        case Op::Add:
+            result = arg(0) + arg(1);
+            break;
+        case Op::Subtract:
+            result = arg(0) - arg(1);
+            break;
+        case Op::Multiply:
+            result = arg(0) * arg(1);
+            break;
+        case Op::Divide:
+            result = arg(0) / arg(1);
+            break;
+        case Op::Negate:
+            result = -arg(0);
+            break;
+        case Op::Less:
+            result = arg(0) < arg(1) ? 1.0f : 0.0f;
+            break;
+        case Op::LessEqual:
+            result = arg(0) <= arg(1) ? 1.0f : 0.0f;
+            break;
+        case Op::Greater:
+            result = arg(0) > arg(1) ? 1.0f : 0.0f;
+            break;
+        case Op::GreaterEqual:
+            result = arg(0) >= arg(1) ? 1.0f : 0.0f;
+            break;
+        case Op::Select: {
+            // Both sides, as equations::select(bool, float, float) receives them.
+            const float mask = arg(0);
+            const float if_true = arg(1);
+            const float if_false = arg(2);
+            result = mask != 0.0f ? if_true : if_false;
+            break;
+        }
+        case Op::Max:
+            result = equations::max(arg(0), arg(1));
+            break;
+        case Op::Pow:
+            result = std::pow(arg(0), arg(1));
+            break;
+        case Op::Sqrt:
+            result = std::sqrt(arg(0));
+            break;
+    }
+    memo.emplace(&node, result);
+    return result;
+}
+
+}  // namespace
+
+float evaluate(const Expr& value, const Bindings& bindings) {
+    std::unordered_map<const Node*, float> memo;
+    return evaluate_node(*value.node(), bindings, memo);
+}
+
+bool evaluate(const Mask& value, const Bindings& bindings) {
+    std::unordered_map<const Node*, float> memo;
+    return evaluate_node(*value.node(), bindings, memo) != 0.0f;
+}
+
+// ---- The generated functions ----
+
+namespace {
+
+using equations::Vec3;
+
+void add_vec3_output(Function& function, const std::string& target, const Vec3<Expr>& value) {
+    function.outputs.push_back({target + ".x", value.x});
+    function.outputs.push_back({target + ".y", value.y});
+    function.outputs.push_back({target + ".z", value.z});
+}
+
+void add_vec3_hint(Function& function, const std::string& name, const Vec3<Expr>& pattern) {
+    function.hints.push_back({name + "_x", pattern.x});
+    function.hints.push_back({name + "_y", pattern.y});
+    function.hints.push_back({name + "_z", pattern.z});
+}
+
+void add_incidence_outputs(Function& function, const equations::Incidence<Expr>& incidence) {
+    add_vec3_output(function, "result.to_light", incidence.to_light);
+    function.outputs.push_back({"result.factor", incidence.factor});
+}
+
+}  // namespace
+
+Function directional_incidence_function() {
+    Function function;
+    function.doc =
+        "Directional light (SPEC sec. 4): L = -normalize(direction), f = 1.\n"
+        "travel_unit: the normalised direction the light travels.";
+    function.return_type = "Incidence";
+    function.name = "directional_incidence";
+    function.parameters = "vec3 travel_unit";
+    add_incidence_outputs(function, equations::directional_incidence(vec3_variable("travel_unit")));
+    return function;
+}
+
+Function point_incidence_function() {
+    Function function;
+    function.doc =
+        "Point light (SPEC sec. 4): L = normalize(position - p),\n"
+        "f = 1 / (k_c + k_l*d + k_q*d^2) with d = |position - p| and attenuation = (k_c, k_l, "
+        "k_q).";
+    function.return_type = "Incidence";
+    function.name = "point_incidence";
+    function.parameters = "vec3 light_position, vec3 attenuation, vec3 p";
+    const Vec3<Expr> light_position = vec3_variable("light_position");
+    const Vec3<Expr> attenuation = vec3_variable("attenuation");
+    const Vec3<Expr> p = vec3_variable("p");
+    add_incidence_outputs(function, equations::point_incidence(light_position, attenuation, p));
+
+    const Vec3<Expr> to_light = light_position - p;
+    const Expr distance = equations::length(to_light);
+    add_vec3_hint(function, "to_light", to_light);
+    function.hints.push_back({"light_distance", distance});
+    function.hints.push_back({"inv_distance", Expr(1.0f) / distance});
+    return function;
+}
+
+Function spot_factor_function() {
+    Function function;
+    function.doc =
+        "Spot cone (SPEC sec. 4): c = -L.axis; s = c^exponent where c >= cos(cutoff) (0^0 = 1),\n"
+        "else 0. axis_unit: the normalised spot direction; cos_cutoff as in\n"
+        "equations::PreparedLight (boundary slack included).";
+    function.return_type = "float";
+    function.name = "spot_factor";
+    function.parameters = "vec3 to_light, vec3 axis_unit, float cos_cutoff, float exponent";
+    const Vec3<Expr> to_light = vec3_variable("to_light");
+    const Vec3<Expr> axis_unit = vec3_variable("axis_unit");
+    function.outputs.push_back(
+        {"", equations::spot_factor(to_light, axis_unit, Expr::variable("cos_cutoff"),
+                                    Expr::variable("exponent"))});
+    function.hints.push_back({"c", -equations::dot(to_light, axis_unit)});
+    return function;
+}
+
+Function reflection_terms_function(Reflection reflection) {
+    Function function;
+    function.return_type = "Terms";
+    function.name = "reflection_terms";
+    function.parameters = "vec3 normal, vec3 to_light, vec3 to_eye, float shininess";
+    const Vec3<Expr> normal = vec3_variable("normal");
+    const Vec3<Expr> to_light = vec3_variable("to_light");
+    const Vec3<Expr> to_eye = vec3_variable("to_eye");
+    const Expr shininess = Expr::variable("shininess");
+    const equations::Terms<Expr> terms = equations::with_reflection(reflection, [&](auto model) {
+        return equations::reflection_terms<decltype(model)::value>(normal, to_light, to_eye,
+                                                                   shininess);
+    });
+    function.outputs.push_back({"result.diffuse", terms.diffuse});
+    function.outputs.push_back({"result.specular", terms.specular});
+
+    const std::string intro = "Diffuse D and specular S of the " +
+                              std::string(to_string(reflection)) +
+                              " reflection model (SPEC sec. 4, ";
+    const Expr n_dot_l = equations::dot(normal, to_light);
+    function.hints.push_back({"n_dot_l", n_dot_l});
+    switch (reflection) {
+        case Reflection::Lambert:
+            function.doc = intro + "IM1):\nD = max(N.L, 0), S = 0.";
+            break;
+        case Reflection::HalfLambert:
+            function.doc = intro + "IM2):\nD = (0.5*(N.L) + 0.5)^2, S = 0.";
+            function.hints.push_back({"wrapped", Expr(0.5f) * n_dot_l + Expr(0.5f)});
+            break;
+        case Reflection::Phong: {
+            function.doc = intro +
+                           "IM3):\nD = max(N.L, 0), S = max(R.V, 0)^shininess with R = 2(N.L)N "
+                           "- L;\nS = 0 where R.V <= 0 or N.L <= 0.";
+            const Expr two_n_dot_l = Expr(2.0f) * n_dot_l;
+            const Vec3<Expr> reflected = two_n_dot_l * normal - to_light;
+            function.hints.push_back({"two_n_dot_l", two_n_dot_l});
+            add_vec3_hint(function, "reflected", reflected);
+            function.hints.push_back({"r_dot_v", equations::dot(reflected, to_eye)});
+            break;
+        }
+        case Reflection::BlinnPhong: {
+            function.doc = intro +
+                           "IM4):\nD = max(N.L, 0), S = max(N.H, 0)^shininess with H = "
+                           "normalize(L + V);\nS = 0 where N.H <= 0 or N.L <= 0.";
+            const Vec3<Expr> l_plus_v = to_light + to_eye;
+            const Expr l_plus_v_length = equations::length(l_plus_v);
+            add_vec3_hint(function, "l_plus_v", l_plus_v);
+            function.hints.push_back({"l_plus_v_length", l_plus_v_length});
+            function.hints.push_back({"inv_l_plus_v_length", Expr(1.0f) / l_plus_v_length});
+            const Vec3<Expr> halfway = equations::normalize(l_plus_v);
+            add_vec3_hint(function, "halfway", halfway);
+            function.hints.push_back({"n_dot_h", equations::dot(normal, halfway)});
+            break;
+        }
+    }
+    function.doc += "\nnormal, to_light (L) and to_eye (V) are unit vectors.";
+    return function;
+}
+
+Function ambient_term_function() {
+    Function function;
+    function.doc = "Ambient light (SPEC sec. 4): k_a * C * I_L, per channel.";
+    function.return_type = "vec3";
+    function.name = "ambient_term";
+    function.parameters = "vec3 radiance, Material material";
+    add_vec3_output(
+        function, "result",
+        equations::ambient_term(vec3_variable("radiance"), material_variable("material")));
+    return function;
+}
+
+Function direct_term_function() {
+    Function function;
+    function.doc =
+        "Any other light (SPEC sec. 4): f * I_L * (k_d * D * C + k_s * S), per channel;\n"
+        "the specular part takes the light's colour.";
+    function.return_type = "vec3";
+    function.name = "direct_term";
+    function.parameters = "vec3 radiance, float factor, Terms terms, Material material";
+    const equations::MaterialT<Expr> material = material_variable("material");
+    const equations::Terms<Expr> terms{Expr::variable("terms.diffuse"),
+                                       Expr::variable("terms.specular")};
+    add_vec3_output(function, "result",
+                    equations::direct_term(vec3_variable("radiance"), Expr::variable("factor"),
+                                           terms, material));
+    function.hints.push_back({"diffuse", material.kd * terms.diffuse});
+    function.hints.push_back({"specular", material.ks * terms.specular});
+    return function;
+}
+
+Function unit_vector_function() {
+    Function function;
+    function.doc =
+        "v / |v| as equations::normalize computes it, (1 / sqrt(v.v)) * v: the very\n"
+        "operations of the CPU path (GLSL's normalize may use inversesqrt).";
+    function.return_type = "vec3";
+    function.name = "unit_vector";
+    function.parameters = "vec3 v";
+    const Vec3<Expr> v = vec3_variable("v");
+    add_vec3_output(function, "result", equations::normalize(v));
+    function.hints.push_back({"inv_length", Expr(1.0f) / equations::length(v)});
+    return function;
+}
+
+std::string print_function(const Function& function, const PrintOptions& options) {
+    std::string text;
+    std::size_t start = 0;
+    while (start <= function.doc.size()) {
+        std::size_t end = function.doc.find('\n', start);
+        if (end == std::string::npos) end = function.doc.size();
+        text += "// " + function.doc.substr(start, end - start) + "\n";
+        start = end + 1;
+    }
+    text += function.return_type + " " + function.name + "(" + function.parameters + ") {\n";
+    const Statements body = statements(function.outputs, function.hints, options, "    ");
+    text += body.temporaries;
+    if (function.return_type == "float") {
+        text += body.assignments;  // return ...;
+    } else {
+        text += "    " + function.return_type + " result;\n" + body.assignments +
+                "    return result;\n";
+    }
+    return text + "}\n";
+}
+
+PrintOptions shader_print_options() {
+    PrintOptions options;
+    options.pow_function = "power";
+    return options;
+}
+
+// ---- Program assembly ----
+
+namespace {
+
+static_assert(static_cast<int>(equations::PreparedLight::Kind::Ambient) == 0 &&
+                  static_cast<int>(equations::PreparedLight::Kind::Directional) == 1 &&
+                  static_cast<int>(equations::PreparedLight::Kind::Point) == 2 &&
+                  static_cast<int>(equations::PreparedLight::Kind::Spot) == 3,
+              "the GLSL LIGHT_* constants are the PreparedLight::Kind values");
+
+std::string header(Reflection reflection, Shading shading, std::string_view stage) {
+    return "#version 330 core\n"
+           "// Generated by litkit " LITKIT_VERSION ": the " +
+           std::string(stage) + " shader for reflection \"" + std::string(to_string(reflection)) +
+           "\", shading \"" + std::string(to_string(shading)) +
+           "\".\n"
+           "// Do not edit; regenerate with `litkit export --format glsl`.\n"
+           "//\n"
+           "// The lighting functions are litkit's equations (SPEC sec. 4), generated from the\n"
+           "// same C++ templates as the CPU renderer, so that both evaluate the same float\n"
+           "// operations in the same order.\n"
+           "//\n"
+           "// The program's interface (both stages):\n"
+           "//   vertex inputs, world space:\n"
+           "//     location 0  vec3 a_position\n"
+           "//     location 1  vec3 a_normal     flat: the face normal (DD8), else the vertex "
+           "normal (DD9)\n"
+           "//     location 2  vec3 a_centroid   flat only: the triangle's centroid, the same at "
+           "its 3 vertices\n"
+           "//   uniforms:\n"
+           "//     mat4 u_view_projection        world -> clip\n"
+           "//     vec3 u_eye                    the observer's position\n"
+           "//     Material u_material           colour C (colour / 255), k_a, k_d, k_s, "
+           "shininess\n"
+           "//     int u_light_count             the lights used, at most MAX_LIGHTS\n"
+           "//     Light u_lights[MAX_LIGHTS]    the fields of litkit::equations::PreparedLight:\n"
+           "//                                   kind (LIGHT_*), radiance I_L, position, "
+           "direction\n"
+           "//                                   (unit; directional: travel, spot: axis),\n"
+           "//                                   attenuation (k_c, k_l, k_q), cos_cutoff (cosine\n"
+           "//                                   of the half-angle less the slack), exponent\n"
+           "//     float u_inv_gamma             1 / gamma\n"
+           "//   fragment output: vec4 frag_color, the pixel value of SPEC sec. 4, a multiple of\n"
+           "//   1/255 (exact in RGBA8), alpha 1\n";
+}
+
+std::string lighting_declarations(Reflection reflection, int light_capacity) {
+    std::string text =
+        "\n"
+        "// Light kinds: the order of litkit::equations::PreparedLight::Kind.\n"
+        "const int LIGHT_AMBIENT = 0;\n"
+        "const int LIGHT_DIRECTIONAL = 1;\n"
+        "const int LIGHT_POINT = 2;\n"
+        "const int LIGHT_SPOT = 3;\n"
+        "\n"
+        "struct Material {\n"
+        "    vec3 color;\n"
+        "    float ka;\n"
+        "    float kd;\n"
+        "    float ks;\n"
+        "    float shininess;\n"
+        "};\n"
+        "\n"
+        "struct Light {\n"
+        "    int kind;\n"
+        "    vec3 radiance;\n"
+        "    vec3 position;\n"
+        "    vec3 direction;\n"
+        "    vec3 attenuation;\n"
+        "    float cos_cutoff;\n"
+        "    float exponent;\n"
+        "};\n"
+        "\n"
+        "// Where a light comes from: L (unit, towards the light) and the factor f.\n"
+        "struct Incidence {\n"
+        "    vec3 to_light;\n"
+        "    float factor;\n"
+        "};\n"
+        "\n"
+        "// Diffuse D and specular S of the reflection model.\n"
+        "struct Terms {\n"
+        "    float diffuse;\n"
+        "    float specular;\n"
+        "};\n"
+        "\n"
+        "const int MAX_LIGHTS = " +
+        std::to_string(light_capacity) +
+        ";\n"
+        "\n"
+        "uniform vec3 u_eye;\n"
+        "uniform Material u_material;\n"
+        "uniform int u_light_count;\n"
+        "uniform Light u_lights[MAX_LIGHTS];\n"
+        "\n"
+        "// pow as C and the CPU path define it, x^0 = 1 for every x (SPEC sec. 4: 0^0 = 1);\n"
+        "// GLSL leaves pow(0, 0) undefined.\n"
+        "float power(float x, float y) {\n"
+        "    return y == 0.0 ? 1.0 : pow(x, y);\n"
+        "}\n";
+    const PrintOptions options = shader_print_options();
+    for (const Function& function :
+         {unit_vector_function(), directional_incidence_function(), point_incidence_function(),
+          spot_factor_function(), reflection_terms_function(reflection), ambient_term_function(),
+          direct_term_function()}) {
+        text += '\n';
+        text += print_function(function, options);
+    }
+    text +=
+        "\n"
+        "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
+        "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V (SPEC sec. 4),\n"
+        "// unclamped. Hand-written (the lights are uniforms here) and kept line for line\n"
+        "// parallel to equations::shade_point: change one, change the other.\n"
+        "vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {\n"
+        "    vec3 total = vec3(0.0);\n"
+        "    for (int i = 0; i < u_light_count; ++i) {\n"
+        "        vec3 radiance = u_lights[i].radiance;\n"
+        "        Incidence incidence;\n"
+        "        if (u_lights[i].kind == LIGHT_AMBIENT) {\n"
+        "            total = total + ambient_term(radiance, u_material);\n"
+        "            continue;\n"
+        "        } else if (u_lights[i].kind == LIGHT_DIRECTIONAL) {\n"
+        "            incidence = directional_incidence(u_lights[i].direction);\n"
+        "        } else if (u_lights[i].kind == LIGHT_POINT) {\n"
+        "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
+        "p);\n"
+        "        } else if (u_lights[i].kind == LIGHT_SPOT) {\n"
+        "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
+        "p);\n"
+        "            incidence.factor =\n"
+        "                incidence.factor * spot_factor(incidence.to_light, "
+        "u_lights[i].direction,\n"
+        "                                               u_lights[i].cos_cutoff, "
+        "u_lights[i].exponent);\n"
+        "        } else {\n"
+        "            continue;  // no other kinds\n"
+        "        }\n"
+        "        Terms terms = reflection_terms(normal, incidence.to_light, to_eye, "
+        "u_material.shininess);\n"
+        "        total = total + direct_term(radiance, incidence.factor, terms, u_material);\n"
+        "    }\n"
+        "    return total;\n"
+        "}\n";
+    return text;
+}
+
+// litkit::to_pixel on the GPU.
+const char* const to_pixel_function =
+    "\n"
+    "uniform float u_inv_gamma;\n"
+    "\n"
+    "// The pixel value of SPEC sec. 4, round(255 * clamp(I, 0, 1)^(1/gamma)) with halves up,\n"
+    "// as litkit::to_pixel computes it (NaN -> 0), divided by 255 so that the conversion\n"
+    "// to RGBA8 is exact.\n"
+    "vec3 to_pixel(vec3 intensity) {\n"
+    "    vec3 c = mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, vec3(0.0)));\n"
+    "    if (u_inv_gamma != 1.0) c = pow(c, vec3(u_inv_gamma));\n"
+    "    vec3 scaled = 255.0 * c;\n"
+    "    vec3 level = floor(scaled);\n"
+    "    level += step(0.5, scaled - level);  // halves up (scaled - level is exact)\n"
+    "    return level / 255.0;\n"
+    "}\n";
+
+}  // namespace
+
+Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
+    if (light_capacity < 1) {
+        throw std::invalid_argument("glsl::generate: the light capacity must be at least 1, not " +
+                                    std::to_string(light_capacity));
+    }
+    Shaders shaders;
+    std::string& vertex = shaders.vertex;
+    std::string& fragment = shaders.fragment;
+    vertex = header(reflection, shading, "vertex");
+    fragment = header(reflection, shading, "fragment");
+
+    vertex +=
+        "\n"
+        "layout(location = 0) in vec3 a_position;\n"
+        "layout(location = 1) in vec3 a_normal;\n";
+    if (shading == Shading::Flat) vertex += "layout(location = 2) in vec3 a_centroid;\n";
+    vertex += "\nuniform mat4 u_view_projection;\n";
+
+    switch (shading) {
+        case Shading::Flat:
+            vertex += lighting_declarations(reflection, light_capacity);
+            vertex +=
+                "\n"
+                "// SPEC sec. 3 flat: lit once per triangle, at its centroid, with the face\n"
+                "// normal. All three vertices of a triangle carry the same centroid and\n"
+                "// normal, so v_color is the same at each and does not depend on the\n"
+                "// provoking vertex.\n"
+                "flat out vec3 v_color;\n"
+                "\n"
+                "void main() {\n"
+                "    v_color = shade(a_centroid, a_normal, unit_vector(u_eye - a_centroid));\n"
+                "    gl_Position = u_view_projection * vec4(a_position, 1.0);\n"
+                "}\n";
+            fragment +=
+                "\n"
+                "// The triangle's colour, unclamped.\n"
+                "flat in vec3 v_color;\n"
+                "\n"
+                "out vec4 frag_color;\n";
+            fragment += to_pixel_function;
+            fragment +=
+                "\n"
+                "void main() {\n"
+                "    frag_color = vec4(to_pixel(v_color), 1.0);\n"
+                "}\n";
+            break;
+        case Shading::Gouraud:
+            vertex += lighting_declarations(reflection, light_capacity);
+            vertex +=
+                "\n"
+                "// SPEC sec. 3 Gouraud: lit at each vertex with its vertex normal; the colour,\n"
+                "// unclamped, is interpolated perspective-correctly (smooth).\n"
+                "out vec3 v_color;\n"
+                "\n"
+                "void main() {\n"
+                "    v_color = shade(a_position, a_normal, unit_vector(u_eye - a_position));\n"
+                "    gl_Position = u_view_projection * vec4(a_position, 1.0);\n"
+                "}\n";
+            fragment +=
+                "\n"
+                "// The interpolated vertex colours, unclamped.\n"
+                "in vec3 v_color;\n"
+                "\n"
+                "out vec4 frag_color;\n";
+            fragment += to_pixel_function;
+            fragment +=
+                "\n"
+                "void main() {\n"
+                "    frag_color = vec4(to_pixel(v_color), 1.0);\n"
+                "}\n";
+            break;
+        case Shading::Phong:
+            vertex +=
+                "\n"
+                "// SPEC sec. 3 Phong: world position and vertex normal, interpolated\n"
+                "// perspective-correctly (smooth); lit per fragment.\n"
+                "out vec3 v_position;\n"
+                "out vec3 v_normal;\n"
+                "\n"
+                "void main() {\n"
+                "    v_position = a_position;\n"
+                "    v_normal = a_normal;\n"
+                "    gl_Position = u_view_projection * vec4(a_position, 1.0);\n"
+                "}\n";
+            fragment +=
+                "\n"
+                "// World position and vertex normal, interpolated perspective-correctly.\n"
+                "in vec3 v_position;\n"
+                "in vec3 v_normal;\n"
+                "\n"
+                "out vec4 frag_color;\n";
+            fragment += lighting_declarations(reflection, light_capacity);
+            fragment += to_pixel_function;
+            fragment +=
+                "\n"
+                "// SPEC sec. 3 Phong: lit at the interpolated position with the interpolated\n"
+                "// normal, renormalised (DD10).\n"
+                "void main() {\n"
+                "    vec3 normal = unit_vector(v_normal);\n"
+                "    vec3 to_eye = unit_vector(u_eye - v_position);\n"
+                "    frag_color = vec4(to_pixel(shade(v_position, normal, to_eye)), 1.0);\n"
+                "}\n";
+            break;
+    }
+    return shaders;
+}
+
+}  // namespace litkit::glsl

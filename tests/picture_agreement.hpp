@@ -1,0 +1,74 @@
+// How close two pictures of one scene are, away from the edges of objects:
+// the measure issue 4 sets for the OpenGL backend and the exported program
+// against the CPU backend (≥ 99.5% of such pixels within 2/255).
+//
+// "Away from edges": the CPU backend draws the scene once more with every
+// object in a colour of its own (ambient light only, k_a = 1), which labels
+// each pixel with the object covering it; a pixel counts when its 3×3
+// neighbourhood carries one label. Rasterisers may disagree about which
+// surface owns a pixel on a silhouette; they must not disagree about its
+// lighting.
+#pragma once
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "litkit/image.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+
+namespace litkit_test {
+
+inline constexpr double required_fraction = 0.995;
+
+// Object i's label colour: (i + 1, 0, 255), exact under ambient light 1 and k_a 1.
+inline litkit::Image labels(litkit::Scene scene) {
+    litkit::Light ambient{litkit::AmbientLight{}};
+    scene.lights = {litkit::SceneLight{"label", ambient}};
+    scene.output.background = {0, 0, 0};
+    scene.output.gamma = 1.0f;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        litkit::SceneObject& object = scene.objects[i];
+        object.material = {glm::vec3(static_cast<float>(i + 1), 0.0f, 255.0f) / 255.0f, 1.0f, 0.0f,
+                           0.0f, 1.0f};
+        object.shading = litkit::Shading::Flat;
+    }
+    return litkit::render(scene, {.fallback_shading = litkit::Shading::Flat});
+}
+
+struct Agreement {
+    std::size_t counted = 0;  // interior pixels covered by an object
+    std::size_t within = 0;   // of those, every channel within 2/255
+    int worst = 0;
+    double fraction() const { return counted ? double(within) / double(counted) : 0.0; }
+};
+
+// Compares the pixels of `a` and `b` whose 3×3 neighbourhood in `label` is
+// one object (background-only neighbourhoods are not counted: both backends
+// clear to the same colour exactly).
+inline Agreement agreement(const litkit::Image& a, const litkit::Image& b, const litkit::Image& label) {
+    Agreement result;
+    auto label_at = [&](int x, int y) {
+        const std::uint8_t* p = label.pixel(x, y);
+        return (p[0] << 16) | (p[1] << 8) | p[2];
+    };
+    for (int y = 1; y + 1 < label.height; ++y) {
+        for (int x = 1; x + 1 < label.width; ++x) {
+            const int centre = label_at(x, y);
+            if (centre == 0) continue;
+            bool interior = true;
+            for (int dy = -1; dy <= 1 && interior; ++dy)
+                for (int dx = -1; dx <= 1 && interior; ++dx) interior = label_at(x + dx, y + dy) == centre;
+            if (!interior) continue;
+            int difference = 0;
+            for (int c = 0; c < 3; ++c)
+                difference = std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+            ++result.counted;
+            result.within += difference <= 2;
+            result.worst = std::max(result.worst, difference);
+        }
+    }
+    return result;
+}
+
+}  // namespace litkit_test

@@ -1,0 +1,291 @@
+// `litkit export` and `litkit render --backend gl` through the command line
+// (issue 4): the exported GLSL compiles, the exported C++ program builds with
+// the system's compiler and draws the picture `litkit render` draws, and the
+// OpenGL backend's errors are clear.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "litkit/image.hpp"
+#include "litkit/scene.hpp"
+#include "picture_agreement.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+    int status = -1;
+    std::string output;  // standard output and error
+};
+
+Outcome run(const std::string& command) {
+    Outcome result;
+    FILE* pipe = ::popen((command + " 2>&1 < /dev/null").c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer;
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int raw = ::pclose(pipe);
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return result;
+}
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Three objects, three different reflection × shading pairs (flat included),
+// every light kind, gamma 2.2 and a coloured background.
+constexpr const char* mixed_scene = R"toml(
+[room]
+width = 10
+height = 8
+depth = 16
+
+[observer]
+position = [0, 1, 7]
+fov = 45
+
+[lighting]
+reflection = "blinn-phong"
+shading = "phong"
+
+[output]
+width = 320
+height = 240
+background = [30, 40, 60]
+gamma = 2.2
+
+[[lights]]
+type = "ambient"
+intensity = 0.25
+
+[[lights]]
+type = "directional"
+direction = [-1, -1, -0.5]
+color = [255, 230, 200]
+
+[[lights]]
+type = "point"
+position = [2, 2, 2]
+attenuation = [1, 0, 0.05]
+
+[[lights]]
+type = "spot"
+position = [0, 3, 1]
+direction = [0, -1, -0.3]
+cutoff = 25
+exponent = 4
+
+[[objects]]
+name = "ball"
+type = "sphere"
+position = [-1.3, 0, 0]
+segments = 32
+rings = 16
+material = { color = [200, 80, 60], ka = 0.2, kd = 0.7, ks = 0.6, shininess = 40 }
+
+[[objects]]
+name = "box"
+type = "cube"
+size = 1.2
+position = [1.3, 0, 0]
+rotation = [20, 35, 0]
+reflection = "half-lambert"
+shading = "flat"
+material = { color = [80, 160, 220] }
+
+[[objects]]
+name = "ring"
+type = "torus"
+position = [0, -2, 0]
+rotation = [70, 0, 0]
+major_radius = 0.7
+minor_radius = 0.2
+reflection = "phong"
+shading = "gouraud"
+material = { color = [230, 200, 90], ks = 0.8, shininess = 16 }
+)toml";
+
+class Export : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("litkit-export-" + std::to_string(::getpid()) + "-" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        std::ofstream(dir / "mixed.toml") << mixed_scene;
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    Outcome cli(const std::string& arguments) const {
+        return run("cd " + quoted(dir) + " && '" LITKIT_CLI "' " + arguments);
+    }
+
+    fs::path dir;
+};
+
+}  // namespace
+
+TEST_F(Export, GlslWritesOneProgramPerModelPairAndEachCompiles) {
+    const std::string validator = LITKIT_GLSLANG_VALIDATOR;
+    ASSERT_FALSE(validator.empty())
+        << "glslangValidator not found: run scripts/install-deps.sh (glslang-tools)";
+    const Outcome exported = cli("export --format glsl mixed.toml -o shaders");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    const std::vector<std::string> stems = {"blinn-phong-phong", "half-lambert-flat",
+                                            "phong-gouraud"};
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(dir / "shaders")) files += entry.is_regular_file();
+    EXPECT_EQ(files, 2 * stems.size());
+    for (const std::string& stem : stems) {
+        const fs::path vert = dir / "shaders" / (stem + ".vert");
+        const fs::path frag = dir / "shaders" / (stem + ".frag");
+        ASSERT_TRUE(fs::exists(vert)) << vert;
+        ASSERT_TRUE(fs::exists(frag)) << frag;
+        // Sized for the scene's four lights (in the stage that lights: the
+        // vertex shader for flat and Gouraud, the fragment shader for Phong).
+        const std::string text = read_text(vert) + read_text(frag);
+        EXPECT_NE(text.find("MAX_LIGHTS = 4"), std::string::npos) << stem;
+        EXPECT_NE(text.find("u_lights"), std::string::npos) << stem;
+        for (const fs::path& shader : {vert, frag}) {
+            const Outcome check = run("'" + validator + "' " + quoted(shader));
+            EXPECT_EQ(check.status, 0) << shader << "\n" << check.output;
+        }
+        const Outcome link = run("'" + validator + "' -l " + quoted(vert) + " " + quoted(frag));
+        EXPECT_EQ(link.status, 0) << stem << "\n" << link.output;
+    }
+}
+
+TEST_F(Export, GlslTheValidatorRejectsABrokenShader) {
+    // The check above can fail: a shader with an error does not pass.
+    const std::string validator = LITKIT_GLSLANG_VALIDATOR;
+    ASSERT_FALSE(validator.empty());
+    ASSERT_EQ(cli("export --format glsl mixed.toml -o shaders").status, 0);
+    const fs::path frag = dir / "shaders" / "phong-gouraud.frag";
+    std::string text = read_text(frag);
+    const std::size_t main_at = text.find("void main()");
+    ASSERT_NE(main_at, std::string::npos);
+    text.insert(main_at, "float broken = undefined_name;\n");
+    std::ofstream(frag) << text;
+    EXPECT_NE(run("'" + validator + "' " + quoted(frag)).status, 0);
+}
+
+TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
+    const Outcome exported = cli("export --format cpp mixed.toml -o program");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_NE(exported.output.find("cmake -S program -B program/build"), std::string::npos)
+        << exported.output;
+    EXPECT_TRUE(fs::exists(dir / "program" / "main.cpp"));
+    EXPECT_TRUE(fs::exists(dir / "program" / "CMakeLists.txt"));
+
+    const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
+                              quoted(dir / "program" / "build"));
+    ASSERT_EQ(configure.status, 0) << configure.output;
+    const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
+    ASSERT_EQ(build.status, 0) << build.output;
+    EXPECT_EQ(build.output.find("warning"), std::string::npos) << build.output;
+
+    const Outcome drawn = run("cd " + quoted(dir) + " && program/build/mixed -o exported.png");
+    ASSERT_EQ(drawn.status, 0) << drawn.output;
+    ASSERT_EQ(cli("render mixed.toml --backend gl -o gl.png").status, 0);
+    ASSERT_EQ(cli("render mixed.toml -o cpu.png").status, 0);
+
+    const litkit::Image exported_png = litkit::read_png(dir / "exported.png");
+    const litkit::Image gl_png = litkit::read_png(dir / "gl.png");
+    const litkit::Image cpu_png = litkit::read_png(dir / "cpu.png");
+    ASSERT_EQ(exported_png.width, 320);
+    ASSERT_EQ(exported_png.height, 240);
+    // The same OpenGL code on the same driver: the very same picture.
+    EXPECT_EQ(exported_png.rgb, gl_png.rgb);
+    // And the picture SPEC.md defines, as the CPU backend draws it.
+    const fs::path scene_file = dir / "mixed.toml";
+    const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
+    const litkit_test::Agreement a =
+        litkit_test::agreement(exported_png, cpu_png, litkit_test::labels(scene));
+    EXPECT_GT(a.counted, 320u * 240u / 10);
+    EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
+
+    // Usage errors get exit status 2.
+    EXPECT_EQ(run(quoted(dir / "program" / "build" / "mixed") + " --bogus").status, 2);
+
+    // --window: built with SDL2 (installed by scripts/install-deps.sh), shown
+    // on a virtual X display for two seconds, then closed the way a window
+    // manager would end it (SIGTERM, which SDL turns into a quit event).
+    EXPECT_EQ(configure.output.find("SDL2 not found"), std::string::npos) << configure.output;
+    const Outcome window = run("xvfb-run -a -s '-screen 0 640x480x24' sh -c '" +
+                               (dir / "program" / "build" / "mixed").string() +
+                               " --window & pid=$!; sleep 2; kill -TERM $pid; wait $pid'");
+    EXPECT_EQ(window.status, 0) << window.output;
+    EXPECT_NE(window.output.find("mixed: showing the scene"), std::string::npos) << window.output;
+}
+
+TEST_F(Export, RefusesToReplaceFilesWithoutForce) {
+    fs::create_directories(dir / "program");
+    std::ofstream(dir / "program" / "main.cpp") << "// the user's own\n";
+    const Outcome refused = cli("export --format cpp mixed.toml -o program");
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_NE(refused.output.find("already exists; pass --force"), std::string::npos) << refused.output;
+    EXPECT_EQ(read_text(dir / "program" / "main.cpp"), "// the user's own\n");
+    EXPECT_FALSE(fs::exists(dir / "program" / "CMakeLists.txt"));  // nothing half-written
+
+    const Outcome forced = cli("export --format cpp mixed.toml -o program --force");
+    EXPECT_EQ(forced.status, 0) << forced.output;
+    EXPECT_NE(read_text(dir / "program" / "main.cpp").find("int main("), std::string::npos);
+}
+
+TEST_F(Export, RejectsAProgramNameThatIsNotAnIdentifier) {
+    const Outcome bad = cli("export --format cpp mixed.toml -o program --name 'two words'");
+    EXPECT_EQ(bad.status, 2) << bad.output;
+    EXPECT_NE(bad.output.find("not a C identifier"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(dir / "program"));
+}
+
+TEST_F(Export, NeedsAFormatAndAFolder) {
+    EXPECT_EQ(cli("export mixed.toml -o out").status, 2);
+    EXPECT_EQ(cli("export --format cpp mixed.toml").status, 2);
+    EXPECT_EQ(cli("export --format pdf mixed.toml -o out").status, 2);
+}
+
+TEST_F(Export, ReportsSceneErrorsLikeRender) {
+    std::ofstream(dir / "bad.toml") << "[room]\nwidth = -1\n";
+    const Outcome bad = cli("export --format glsl bad.toml -o out");
+    EXPECT_EQ(bad.status, 2) << bad.output;
+    EXPECT_NE(bad.output.find("bad.toml:2:"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_F(Export, GlBackendRendersThroughTheCli) {
+    const Outcome rendered = cli("render --backend gl -o default.png");
+    ASSERT_EQ(rendered.status, 0) << rendered.output;
+    const litkit::Image image = litkit::read_png(dir / "default.png");
+    EXPECT_EQ(image.width, 800);
+    const Outcome bench = cli("bench --backend gl --frames 2");
+    EXPECT_EQ(bench.status, 0) << bench.output;
+    EXPECT_NE(bench.output.find("OpenGL backend"), std::string::npos) << bench.output;
+}
+
+TEST_F(Export, GlBackendWithoutOpenGlSaysWhyAndSuggestsTheCpu) {
+    // glvnd told to use no EGL vendor at all: as on a machine without a driver.
+    const Outcome failed = run("cd " + quoted(dir) +
+                           " && __EGL_VENDOR_LIBRARY_FILENAMES=/dev/null '" LITKIT_CLI
+                           "' render --backend gl -o none.png");
+    EXPECT_EQ(failed.status, 1) << failed.output;
+    EXPECT_NE(failed.output.find("OpenGL is not available"), std::string::npos) << failed.output;
+    EXPECT_NE(failed.output.find("--backend cpu"), std::string::npos) << failed.output;
+    EXPECT_FALSE(fs::exists(dir / "none.png"));
+}

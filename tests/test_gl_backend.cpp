@@ -1,0 +1,198 @@
+// The OpenGL backend against the CPU backend (issue 4): the same scene drawn
+// by both must agree within 2/255 on at least 99.5% of the pixels that lie
+// away from the edges of objects (tests/picture_agreement.hpp). Runs on
+// whatever EGL offers: Mesa's llvmpipe in CI.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "litkit/gl_renderer.hpp"
+#include "litkit/render.hpp"
+#include "litkit/scene.hpp"
+#include "picture_agreement.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using litkit_test::agreement;
+using litkit_test::Agreement;
+using litkit_test::labels;
+using litkit_test::required_fraction;
+
+struct Comparison {
+    Agreement agreement;
+    std::size_t pixels = 0;
+};
+
+Comparison compare_backends(const litkit::Scene& scene) {
+    const litkit::Image cpu = litkit::render(scene);
+    litkit::GlRenderer gl(scene);
+    const litkit::Image gpu = gl.render();
+    EXPECT_EQ(gpu.width, cpu.width);
+    EXPECT_EQ(gpu.height, cpu.height);
+    return {agreement(gpu, cpu, labels(scene)), cpu.rgb.size() / 3};
+}
+
+// The matrix scenes: one object, one light of the kind asked for (plus a dim
+// ambient light with the others, so unlit parts are not all black).
+enum class Shape { Sphere, Cube };
+enum class LightType { Ambient, Directional, Point, Spot };
+
+litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection reflection,
+                           litkit::Shading shading) {
+    litkit::Scene scene;
+    scene.output.width = 160;
+    scene.output.height = 120;
+    scene.output.background = {20, 30, 40};
+    scene.observer.position = {0.0f, 1.0f, 4.0f};
+    scene.reflection = reflection;
+    scene.shading = shading;
+
+    litkit::SceneObject object;
+    if (shape == Shape::Sphere)
+        object.shape = litkit::SphereShape{1.0f, 24, 12};
+    else
+        object.shape = litkit::CubeShape{1.4f};
+    object.rotation_degrees = {25.0f, 35.0f, 0.0f};
+    object.material = {glm::vec3(200.0f, 120.0f, 60.0f) / 255.0f, 0.2f, 0.7f, 0.6f, 24.0f};
+    scene.objects.push_back(object);
+
+    litkit::Light light;
+    switch (light_type) {
+        case LightType::Ambient:
+            light.kind = litkit::AmbientLight{};
+            break;
+        case LightType::Directional:
+            light.kind = litkit::DirectionalLight{{-1.0f, -1.5f, -1.0f}};
+            break;
+        case LightType::Point:
+            light.kind = litkit::PointLight{{1.5f, 2.0f, 2.0f}, {1.0f, 0.0f, 0.05f}};
+            break;
+        case LightType::Spot:
+            // Aimed off-centre with a narrow cone, so the cone's edge crosses the object.
+            light.kind = litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
+                                           20.0f, 2.0f};
+            break;
+    }
+    light.color = glm::vec3(255.0f, 240.0f, 220.0f) / 255.0f;
+    scene.lights.push_back({"light", light});
+    if (light_type != LightType::Ambient) {
+        litkit::Light fill{litkit::AmbientLight{}, glm::vec3(1.0f), 0.3f};
+        scene.lights.push_back({"fill", fill});
+    }
+    return scene;
+}
+
+}  // namespace
+
+TEST(GlBackend, ReportsTheRenderer) {
+    litkit::GlRenderer gl(litkit::default_scene());
+    EXPECT_FALSE(gl.description().empty());
+    EXPECT_EQ(gl.triangle_count(), 12u);
+}
+
+TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
+    const litkit::Reflection reflections[] = {litkit::Reflection::Lambert, litkit::Reflection::HalfLambert,
+                                              litkit::Reflection::Phong, litkit::Reflection::BlinnPhong};
+    const litkit::Shading shadings[] = {litkit::Shading::Flat, litkit::Shading::Gouraud,
+                                        litkit::Shading::Phong};
+    const LightType lights[] = {LightType::Ambient, LightType::Directional, LightType::Point,
+                                LightType::Spot};
+    int cases = 0;
+    double lowest = 1.0;
+    int worst = 0;
+    for (Shape shape : {Shape::Sphere, Shape::Cube}) {
+        for (litkit::Reflection reflection : reflections) {
+            for (litkit::Shading shading : shadings) {
+                for (LightType light : lights) {
+                    const Comparison c = compare_backends(matrix_scene(shape, light, reflection, shading));
+                    SCOPED_TRACE(std::string(shape == Shape::Sphere ? "sphere " : "cube ") +
+                                 std::string(litkit::to_string(reflection)) + " " +
+                                 std::string(litkit::to_string(shading)) + " light " +
+                                 std::to_string(static_cast<int>(light)));
+                    // The object fills a good part of the picture, so the check is not vacuous.
+                    EXPECT_GT(c.agreement.counted, c.pixels / 10);
+                    EXPECT_GE(c.agreement.fraction(), required_fraction)
+                        << "worst " << c.agreement.worst << "/255";
+                    lowest = std::min(lowest, c.agreement.fraction());
+                    worst = std::max(worst, c.agreement.worst);
+                    ++cases;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(cases, 2 * 4 * 3 * 4);
+    std::cout << "matrix: " << cases << " scenes, lowest fraction within 2/255 " << lowest
+              << ", largest difference " << worst << "/255\n";
+}
+
+TEST(GlBackend, MatchesCpuOnEveryExample) {
+    std::vector<std::vector<fs::path>> scenes;
+    for (const auto& entry : fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples"))
+        if (entry.path().extension() == ".toml") scenes.push_back({entry.path()});
+    std::vector<fs::path> multi;
+    for (const auto& entry : fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples" / "multi-file"))
+        if (entry.path().extension() == ".toml") multi.push_back(entry.path());
+    std::sort(multi.begin(), multi.end());
+    scenes.push_back(multi);
+    ASSERT_GE(scenes.size(), 18u);  // 17 single files and the multi-file pair
+    for (const std::vector<fs::path>& files : scenes) {
+        SCOPED_TRACE(files.front().filename().string());
+        litkit::Scene scene = litkit::load_scene(files);
+        if (!scene.reflection) scene.reflection = litkit::default_reflection;
+        if (!scene.shading) scene.shading = litkit::default_shading;
+        const Comparison c = compare_backends(scene);
+        EXPECT_GT(c.agreement.counted, c.pixels / 50);
+        EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst << "/255";
+        std::cout << files.front().filename().string() << ": " << c.agreement.counted
+                  << " interior pixels, fraction within 2/255 " << c.agreement.fraction()
+                  << ", largest difference " << c.agreement.worst << "/255\n";
+    }
+}
+
+TEST(GlBackend, ComparisonCatchesAWrongPicture) {
+    // The check above must be able to fail: the CPU drawing Lambert against
+    // OpenGL drawing Phong on a shiny sphere is far outside the tolerance.
+    litkit::Scene phong = matrix_scene(Shape::Sphere, LightType::Point, litkit::Reflection::Phong,
+                                       litkit::Shading::Phong);
+    litkit::Scene lambert = phong;
+    lambert.reflection = litkit::Reflection::Lambert;
+    litkit::GlRenderer gl(phong);
+    const Agreement a = agreement(gl.render(), litkit::render(lambert), labels(phong));
+    EXPECT_GT(a.counted, 1000u);
+    EXPECT_LT(a.fraction(), required_fraction);
+}
+
+TEST(GlBackend, PerObjectOverridesUseTheirOwnPrograms) {
+    // Two objects, each overriding the scene's models differently.
+    litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Point, litkit::Reflection::Lambert,
+                                       litkit::Shading::Gouraud);
+    scene.objects[0].position = {-1.2f, 0.0f, 0.0f};
+    scene.objects[0].scale = 0.8f;
+    scene.objects[0].reflection = litkit::Reflection::BlinnPhong;
+    scene.objects[0].shading = litkit::Shading::Phong;
+    litkit::SceneObject cube = scene.objects[0];
+    cube.shape = litkit::CubeShape{1.0f};
+    cube.position = {1.2f, 0.0f, 0.0f};
+    cube.reflection = litkit::Reflection::HalfLambert;
+    cube.shading = litkit::Shading::Flat;
+    scene.objects.push_back(cube);
+    const Comparison c = compare_backends(scene);
+    EXPECT_GT(c.agreement.counted, c.pixels / 20);
+    EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst;
+}
+
+TEST(GlBackend, DrawsSeveralFramesAlike) {
+    litkit::GlRenderer gl(matrix_scene(Shape::Cube, LightType::Spot, litkit::Reflection::Phong,
+                                       litkit::Shading::Phong));
+    litkit::Image first = gl.render();
+    litkit::Image second;
+    gl.render_into(second);
+    gl.render_into(second);
+    EXPECT_EQ(first.rgb, second.rgb);
+}
