@@ -10,29 +10,14 @@
 #include <string>
 
 #include "litkit/image.hpp"
+#include "run_command.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-// Runs a shell command, standard input from /dev/null (not a terminal).
-CliRun run_command(const std::string& command_line) {
-    const std::string command = command_line + " < /dev/null 2>&1";
-    CliRun run;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return run;
-    std::array<char, 4096> buffer;
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.output.append(buffer.data(), n);
-    const int raw = ::pclose(pipe);
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return run;
-}
+using CliRun = litkit_test::CommandRun;
+using litkit_test::run_command;
 
 // Runs the CLI with `arguments` in `directory`, standard input from /dev/null
 // (not a terminal).

@@ -17,29 +17,22 @@
 #include "litkit/image.hpp"
 #include "litkit/scene.hpp"
 #include "picture_agreement.hpp"
+#include "run_command.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-    int status = -1;
-    std::string output;  // standard output and error
-};
+using Outcome = litkit_test::CommandRun;
 
-Outcome run(const std::string& command) {
-    Outcome result;
-    FILE* pipe = ::popen((command + " 2>&1 < /dev/null").c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer;
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-    const int raw = ::pclose(pipe);
-    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return result;
+Outcome run(const std::string& command) { return litkit_test::run_command(command); }
+
+std::string quoted(const fs::path& path) {
+    std::string text = "'";
+    text += path.string();
+    text += "'";
+    return text;
 }
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
