@@ -1,6 +1,8 @@
 #include "litkit/export.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -62,10 +64,23 @@ void make_directory(const fs::path& directory) {
                       IoError::Access::Write);
 }
 
-// A float literal that reads back as the same float: "0.5f", "1.0f", "-3e-07f".
+// The shortest float literal that reads back as the same float, in plain
+// decimals where that is short ("0.05f", "20.0f") and otherwise in
+// exponent form ("1e-07f").
 std::string float_literal(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+    char text[48];
+    const float magnitude = std::fabs(value);
+    bool found = false;
+    if (value == 0.0f || (magnitude >= 1e-4f && magnitude < 1e7f)) {
+        for (int decimals = 1; decimals <= 12 && !found; ++decimals) {
+            std::snprintf(text, sizeof text, "%.*f", decimals, static_cast<double>(value));
+            found = std::strtof(text, nullptr) == value;
+        }
+    }
+    for (int digits = 1; digits <= 9 && !found; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
+        found = std::strtof(text, nullptr) == value;
+    }
     std::string literal = text;
     if (literal.find_first_of(".en") == std::string::npos) literal += ".0";
     return literal + "f";
@@ -120,18 +135,31 @@ std::string light_kind_name(equations::PreparedLight::Kind kind) {
     return "LIGHT_SPOT";
 }
 
+// One row of the `lights` table, naming only the fields this kind uses.
 std::string lights_source(const Scene& scene) {
     const std::vector<equations::PreparedLight> lights = detail::prepared_lights(scene);
     std::string out;
     for (std::size_t i = 0; i < lights.size(); ++i) {
+        using Kind = equations::PreparedLight::Kind;
         const equations::PreparedLight& l = lights[i];
         const std::string& name = scene.lights[i].name;
-        out += "    // light " + std::to_string(i) + (name.empty() ? "" : " \"" + printable(name) + "\"") +
-               "\n";
-        out += "    {" + light_kind_name(l.kind) + ", " + vec3_braces(l.radiance) + ", " +
-               vec3_braces(l.position) + ", " + vec3_braces(l.direction) + ", " +
-               vec3_braces(l.attenuation) + ", " + float_literal(l.cos_cutoff) + ", " +
-               float_literal(l.exponent) + "},\n";
+        out += "    // light " + std::to_string(i);
+        if (!name.empty()) out += " \"" + printable(name) + "\"";
+        out += "\n    {.kind = " + light_kind_name(l.kind) + ",\n     .radiance = " + vec3_braces(l.radiance);
+        if (l.kind == Kind::Point || l.kind == Kind::Spot) {
+            out += ",\n     .position = " + vec3_braces(l.position);
+        }
+        if (l.kind == Kind::Directional || l.kind == Kind::Spot) {
+            out += ",\n     .direction = " + vec3_braces(l.direction);
+        }
+        if (l.kind == Kind::Point || l.kind == Kind::Spot) {
+            out += ",\n     .attenuation = " + vec3_braces(l.attenuation);
+        }
+        if (l.kind == Kind::Spot) {
+            out += ",\n     .cos_cutoff = " + float_literal(l.cos_cutoff);
+            out += ",\n     .exponent = " + float_literal(l.exponent);
+        }
+        out += "},\n";
     }
     return out;
 }
@@ -195,12 +223,18 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
         out.arrays += "\n";
 
         const Material& m = object.material;
-        out.objects += "    {\"" + label + "\", " + std::to_string(models.program[i]) + ", {" +
-                       vec3_braces(m.color) + ", " + float_literal(m.ka) + ", " +
-                       float_literal(m.kd) + ", " + float_literal(m.ks) + ", " +
-                       float_literal(m.shininess) + "},\n     " + id + "_vertices, std::size(" + id +
-                       "_vertices), " + (flat ? "nullptr, 0" : id + "_indices, std::size(" + id + "_indices)") +
-                       "},\n";
+        out.objects += "    {.name = \"" + label + "\",\n     .program = " +
+                       std::to_string(models.program[i]) + ",  // " + pair_file_stem(pair) +
+                       "\n     .material = {.color = " + vec3_braces(m.color) + ", .ka = " +
+                       float_literal(m.ka) + ", .kd = " + float_literal(m.kd) + ", .ks = " +
+                       float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
+                       "},\n     .vertices = " + id +
+                       "_vertices,\n     .vertex_floats = std::size(" + id + "_vertices)";
+        if (!flat) {
+            out.objects += ",\n     .indices = " + id + "_indices,\n     .index_count = std::size(" +
+                           id + "_indices)";
+        }
+        out.objects += "},\n";
     }
     return out;
 }
@@ -285,7 +319,7 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
         "#   cmake -S . -B build && cmake --build build\n"
         "cmake_minimum_required(VERSION 3.16)\n"
         "project(" + program_name + " LANGUAGES CXX)\n\n"
-        "set(CMAKE_CXX_STANDARD 17)\n"
+        "set(CMAKE_CXX_STANDARD 20)\n"
         "set(CMAKE_CXX_STANDARD_REQUIRED ON)\n"
         "if(NOT CMAKE_BUILD_TYPE)\n"
         "    set(CMAKE_BUILD_TYPE Release)\n"
