@@ -282,3 +282,17 @@ TEST_F(Export, GlBackendWithoutOpenGlSaysWhyAndSuggestsTheCpu) {
     EXPECT_NE(failed.output.find("--backend cpu"), std::string::npos) << failed.output;
     EXPECT_FALSE(fs::exists(dir / "none.png"));
 }
+
+TEST_F(Export, ShadersInTheDocsAreCurrent) {
+    // docs/shaders shows students the GLSL of the default scene; it must be
+    // what litkit writes today. After changing the generator, refresh it with
+    //   ./build/litkit export --format glsl -o docs/shaders --force
+    const Outcome exported = cli("export --format glsl -o shaders");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    const fs::path docs = fs::path(LITKIT_SOURCE_DIR) / "docs" / "shaders";
+    for (const char* name : {"phong-phong.vert", "phong-phong.frag"}) {
+        ASSERT_TRUE(fs::exists(docs / name)) << docs / name;
+        EXPECT_EQ(read_text(docs / name), read_text(dir / "shaders" / name))
+            << name << " is out of date: ./build/litkit export --format glsl -o docs/shaders --force";
+    }
+}
