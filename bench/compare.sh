@@ -1,21 +1,25 @@
 #!/usr/bin/env bash
 # bench/compare.sh [--quick] [--rounds R] [--frames K]
 #
-# litkit against plain OpenGL (bench/gl_peer: EGL headless, GLSL per-pixel
-# Phong, on Mesa's llvmpipe where there is no GPU), same scenes, same thread
+# litkit's CPU backend against litkit's OpenGL backend (`--backend gl`:
+# OpenGL 3.3 core on a headless EGL context, Mesa's llvmpipe where there is
+# no GPU), both from the same `litkit` binary, same scenes, same thread
 # count, in one run. Each round runs every scene on both sides, alternating
 # which goes first; the table shows the median over the rounds of each side
-# and the ratio OpenGL time / litkit time (> 1: litkit is faster).
+# and the ratio GL time / CPU time (> 1: the CPU backend is faster).
 #
 #   whole process  default scene to a PNG at 800×600 and 1920×1080: process
-#                  start to file written (hyperfine when installed, else a
-#                  plain loop of date +%s%N)
-#   steady frames  median frame time of `litkit bench` and of
-#                  `litkit_gl_peer` (one warm-up frame, then K frames, each
-#                  read back to memory), 1920×1080
+#                  start to file written, `litkit render --backend cpu|gl`
+#                  (hyperfine when installed, else a plain loop of date +%s%N)
+#   steady frames  median frame time of `litkit bench --backend cpu|gl` (one
+#                  warm-up frame, then K frames, each read back to memory),
+#                  1920×1080
+#   set-up         the set-up time `litkit bench` reports before its frames
+#                  (meshes, normals, world space; GL adds the EGL context,
+#                  shader compilation and upload), 1920×1080
 #   memory         peak resident set size of the 1080p runs (GNU time -v)
 #
-# Default: 5 rounds of 20 frames (about ten minutes on 2 cores). --quick:
+# Default: 5 rounds of 20 frames (about three minutes on 2 cores). --quick:
 # one round of 3 frames, a smoke run for CI. Installs what it needs through
 # `scripts/install-deps.sh --bench`. Builds what it runs in build-bench/
 # (LITKIT_BENCH_BUILD overrides), with at most 2 parallel jobs. Raw numbers
@@ -44,22 +48,18 @@ while [ $# -gt 0 ]; do
 done
 
 # ---- build -----------------------------------------------------------------
-# One command from a clean checkout: install what the peer needs (apt; a
-# no-op when everything is there).
+# One command from a clean checkout: install what the build and the timing
+# need (apt; a no-op when everything is there).
 "$root/scripts/install-deps.sh" --bench
-if ! pkg-config --exists epoxy 2>/dev/null; then
-  echo "error: the OpenGL peer needs libepoxy, EGL and Mesa: run scripts/install-deps.sh --bench" >&2
-  exit 1
-fi
 if ! grep -qs '^LITKIT_BUILD_BENCH:BOOL=ON' "$build/CMakeCache.txt"; then
   generator=()
   [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null && generator=(-G Ninja)
   cmake -S "$root" -B "$build" "${generator[@]}" -DLITKIT_BUILD_BENCH=ON \
         -DCMAKE_BUILD_TYPE=Release -DLITKIT_BUILD_TESTS=OFF >/dev/null
 fi
-if ! cmake --build "$build" -j2 --target litkit_cli litkit_gl_peer litkit_png_diff >"$build/compare-build.log" 2>&1; then
+if ! cmake --build "$build" -j2 --target litkit_cli litkit_png_diff >"$build/compare-build.log" 2>&1; then
   tail -n 20 "$build/compare-build.log" >&2
-  if [ -x "$build/litkit" ] && [ -x "$build/litkit_gl_peer" ] && [ -x "$build/litkit_png_diff" ] &&
+  if [ -x "$build/litkit" ] && [ -x "$build/litkit_png_diff" ] &&
      [ "${LITKIT_BENCH_STALE_OK:-}" = 1 ]; then
     echo "warning: the build failed; LITKIT_BENCH_STALE_OK=1: timing the binaries of the last good build" >&2
   else
@@ -68,7 +68,6 @@ if ! cmake --build "$build" -j2 --target litkit_cli litkit_gl_peer litkit_png_di
   fi
 fi
 litkit=$build/litkit
-peer=$build/litkit_gl_peer
 png_diff=$build/litkit_png_diff
 
 # ---- one thread count for both ---------------------------------------------
@@ -79,7 +78,7 @@ out=$build/compare
 mkdir -p "$out"
 rm -f "$out"/*.png "$out"/*.json "$out"/*.toml "$out"/*.time "$out"/*.log
 raw=$out/raw.tsv
-printf 'round\tscene\tside\tms\trss_kib\n' >"$raw"
+printf 'round\tscene\tside\tms\trss_kib\tsetup_ms\n' >"$raw"
 log=$out/runs.log
 : >"$log"
 
@@ -102,28 +101,43 @@ idle_percent() {
 busy_rounds=""
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n1)
-gl_renderer=$("$peer" --info | sed -n 's/^gl_renderer: //p')
-gl_version=$("$peer" --info | sed -n 's/^gl_version: //p')
-egl_platform=$("$peer" --info | sed -n 's/^egl_platform: //p')
+# GL_RENDERER and GL_VERSION, from the `renderer:` line of a tiny GL run; it
+# also stops the script here, with litkit's message, where OpenGL cannot run.
+gl_renderer=$("$litkit" bench --backend gl --width 16 --height 16 --frames 1 2>>"$log" |
+              sed -n 's/^renderer: OpenGL backend: //p') || true
+if [ -z "$gl_renderer" ]; then
+  echo "error: litkit --backend gl does not run here (see $log)" >&2
+  tail -n 5 "$log" >&2
+  exit 1
+fi
 
-echo "litkit vs OpenGL: $(date -u '+%Y-%m-%d %H:%M UTC')"
+echo "litkit CPU backend vs litkit OpenGL backend: $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "cpu:     ${cpu:-unknown}, $(nproc) hardware threads"
-echo "litkit:  $("$litkit" --version), --threads $threads"
-echo "opengl:  $gl_renderer, $gl_version (EGL $egl_platform), LP_NUM_THREADS=$LP_NUM_THREADS"
+echo "litkit:  $("$litkit" --version) ($litkit)"
+echo "CPU:     --backend cpu --threads $threads"
+echo "GL:      --backend gl: $gl_renderer; LP_NUM_THREADS=$LP_NUM_THREADS"
 echo "rounds:  $rounds; steady frames: $frames per run after 1 warm-up;" \
      "whole process: $([ $have_hyperfine = yes ] && echo "hyperfine, $whole_warmup warm-up + $whole_runs runs" || echo "plain loop, $whole_runs runs") per round"
 echo "idle:    $(idle_percent)% of CPU time idle over 1 s before starting (anything else running skews both sides)"
 echo
 
 # ---- the two pictures agree? -----------------------------------------------
-echo "picture check (fraction of pixels within 2/255 of litkit's):"
-for scene in "" "$root/examples/reflection-models.toml"; do
-  name=${scene:+$(basename "$scene" .toml)}
-  name=${name:-default}
-  "$litkit" render ${scene:+"$scene"} --threads "$threads" -o "$out/check-$name-litkit.png" >>"$log" 2>&1
-  "$peer" ${scene:+"$scene"} --png "$out/check-$name-opengl.png" >>"$log" 2>&1
-  printf '  %-18s %s\n' "$name" \
-    "$("$png_diff" "$out/check-$name-litkit.png" "$out/check-$name-opengl.png")"
+# The default scene, one example with every reflection model, and every scene
+# and reflection × shading pair timed below, each at its own size.
+echo "picture check (GL picture against the CPU picture; within_2: fraction of pixels within 2/255):"
+check() {  # name, litkit render arguments
+  local name=$1; shift
+  "$litkit" render "$@" --backend cpu --threads "$threads" -o "$out/check-$name-cpu.png" >>"$log" 2>&1
+  "$litkit" render "$@" --backend gl -o "$out/check-$name-gl.png" >>"$log" 2>&1
+  printf '  %-24s %s\n' "$name" "$("$png_diff" "$out/check-$name-cpu.png" "$out/check-$name-gl.png")"
+}
+check default
+check reflection-models "$root/examples/reflection-models.toml"
+for name in fill sphere-65k sphere-261k teapot-64; do check "$name" "$scenes/$name.toml"; done
+for reflection in lambert half-lambert phong blinn-phong; do
+  for shading in flat gouraud phong; do
+    check "65k-$reflection-$shading" "$scenes/sphere-65k.toml" --reflection "$reflection" --shading "$shading"
+  done
 done
 echo
 
@@ -144,51 +158,51 @@ timed() {
   fi
 }
 last_rss() { sed -n 's/.*Maximum resident set size (kbytes): //p' "$out/last.time"; }
-record() { printf '%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "${5:-}" >>"$raw"; }
+record() { printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "${5:-}" "${6:-}" >>"$raw"; }
 
 # ---- whole process: default scene to PNG -----------------------------------------
 whole_round() {  # round, label, width, height, first side
   local r=$1 label=$2 w=$3 h=$4 first=$5
-  local lk=("$litkit" render --width "$w" --height "$h" --threads "$threads" -o "$out/whole-litkit.png")
-  local gl=("$peer" --width "$w" --height "$h" --png "$out/whole-opengl.png")
-  local lk_cmd gl_cmd
-  lk_cmd=$(printf '%q ' "${lk[@]}")
+  local cpu=("$litkit" render --backend cpu --width "$w" --height "$h" --threads "$threads" -o "$out/whole-cpu.png")
+  local gl=("$litkit" render --backend gl --width "$w" --height "$h" -o "$out/whole-gl.png")
+  local cpu_cmd gl_cmd
+  cpu_cmd=$(printf '%q ' "${cpu[@]}")
   gl_cmd=$(printf '%q ' "${gl[@]}")
   if [ $have_hyperfine = yes ]; then
     local json=$out/whole-$label-$r.json
-    if [ "$first" = litkit ]; then
+    if [ "$first" = cpu ]; then
       hyperfine -N --style none --warmup "$whole_warmup" --runs "$whole_runs" --export-json "$json" \
-        -n litkit "$lk_cmd" -n opengl "$gl_cmd" >>"$log" 2>&1
+        -n cpu "$cpu_cmd" -n gl "$gl_cmd" >>"$log" 2>&1
     else
       hyperfine -N --style none --warmup "$whole_warmup" --runs "$whole_runs" --export-json "$json" \
-        -n opengl "$gl_cmd" -n litkit "$lk_cmd" >>"$log" 2>&1
+        -n gl "$gl_cmd" -n cpu "$cpu_cmd" >>"$log" 2>&1
     fi
     # results in command order: "command": name ... "median": seconds
     local side
-    for side in litkit opengl; do
+    for side in cpu gl; do
       local s
       s=$(tr -d '\n ' <"$json" | grep -o "\"command\":\"$side\"[^}]*" | grep -o '"median":[0-9.eE+-]*' | cut -d: -f2)
       record "$r" "$label" "$side" "$(awk -v s="$s" 'BEGIN { printf "%.3f", s * 1000 }')"
     done
   else
     local i t0
-    "${lk[@]}" >>"$log" 2>&1; "${gl[@]}" >>"$log" 2>&1   # warm-up
+    "${cpu[@]}" >>"$log" 2>&1; "${gl[@]}" >>"$log" 2>&1   # warm-up
     for ((i = 0; i < whole_runs; i++)); do
-      t0=$(now_ns); "${lk[@]}" >>"$log" 2>&1
-      record "$r" "$label-run" litkit "$(( ($(now_ns) - t0) / 1000 ))e-3"
+      t0=$(now_ns); "${cpu[@]}" >>"$log" 2>&1
+      record "$r" "$label-run" cpu "$(( ($(now_ns) - t0) / 1000 ))e-3"
       t0=$(now_ns); "${gl[@]}" >>"$log" 2>&1
-      record "$r" "$label-run" opengl "$(( ($(now_ns) - t0) / 1000 ))e-3"
+      record "$r" "$label-run" gl "$(( ($(now_ns) - t0) / 1000 ))e-3"
     done
     local side
-    for side in litkit opengl; do
+    for side in cpu gl; do
       record "$r" "$label" "$side" "$(awk -F'\t' -v r="$r" -v l="$label-run" -v s="$side" \
         '$1 == r && $2 == l && $3 == s { print $4 + 0 }' "$raw" | median)"
     done
   fi
   # peak memory of the 1080p whole process, once per round, outside the timing
   if [ "$h" -ge 1080 ] && [ -n "$gnu_time" ]; then
-    timed "${lk[@]}" >/dev/null; record "$r" "$label" litkit-rss "" "$(last_rss)"
-    timed "${gl[@]}" >/dev/null; record "$r" "$label" opengl-rss "" "$(last_rss)"
+    timed "${cpu[@]}" >/dev/null; record "$r" "$label" cpu-rss "" "$(last_rss)"
+    timed "${gl[@]}" >/dev/null; record "$r" "$label" gl-rss "" "$(last_rss)"
   fi
 }
 
@@ -208,51 +222,34 @@ for reflection in lambert half-lambert phong blinn-phong; do
   done
 done
 
-# `litkit bench` may not take --reflection/--shading: then it gets a copy of
-# the scene with [lighting] rewritten (the peer takes the flags).
-litkit_bench_flags=no
-"$litkit" bench --help 2>/dev/null | grep -q -- '--reflection' && litkit_bench_flags=yes
-litkit_scene_for() {  # scene, reflection, shading -> path
-  local scene=$1 reflection=$2 shading=$3
-  if [ -z "$reflection" ] || [ $litkit_bench_flags = yes ]; then echo "$scene"; return; fi
-  local copy=$out/$(basename "$scene" .toml)-$reflection-$shading.toml
-  sed -e "s/^reflection = .*/reflection = \"$reflection\"/" \
-      -e "s/^shading = .*/shading = \"$shading\"/" "$scene" >"$copy"
-  echo "$copy"
-}
-
 frame_ms() { sed -n 's/^median_frame_ms=\([0-9.]*\).*/\1/p' | tail -n1; }
+setup_ms() { sed -n 's/^setup: \([0-9.]*\) ms.*/\1/p' | tail -n1; }
 
 steady_round() {  # round, row, first side
   local r=$1 first=$3 label scene reflection shading
   IFS='|' read -r label scene reflection shading <<<"$2"
-  local lk=("$litkit" bench) gl=("$peer")
-  if [ -n "$scene" ]; then
-    lk+=("$(litkit_scene_for "$scene" "$reflection" "$shading")")
-    gl+=("$scene")
-  fi
-  lk+=(--width 1920 --height 1080 --frames "$frames" --threads "$threads")
-  gl+=(--width 1920 --height 1080 --frames "$frames")
-  if [ -n "$reflection" ]; then
-    gl+=(--reflection "$reflection" --shading "$shading")
-    [ $litkit_bench_flags = yes ] && lk+=(--reflection "$reflection" --shading "$shading")
-  fi
+  local common=(bench)
+  [ -n "$scene" ] && common+=("$scene")
+  common+=(--width 1920 --height 1080 --frames "$frames")
+  [ -n "$reflection" ] && common+=(--reflection "$reflection" --shading "$shading")
   local side
-  for side in $first $([ "$first" = litkit ] && echo opengl || echo litkit); do
-    local ms
-    if [ "$side" = litkit ]; then
-      ms=$(timed "${lk[@]}" | tee -a "$log" | frame_ms)
+  for side in $first $([ "$first" = cpu ] && echo gl || echo cpu); do
+    local output ms
+    if [ "$side" = cpu ]; then
+      output=$(timed "$litkit" "${common[@]}" --backend cpu --threads "$threads")
     else
-      ms=$(timed "${gl[@]}" | tee -a "$log" | frame_ms)
+      output=$(timed "$litkit" "${common[@]}" --backend gl)
     fi
-    [ -n "$ms" ] || { echo "error: $side gave no median_frame_ms for '$label' (see $log)" >&2; exit 1; }
-    record "$r" "$label" "$side" "$ms" "$(last_rss)"
+    printf '%s\n' "$output" >>"$log"
+    ms=$(frame_ms <<<"$output")
+    [ -n "$ms" ] || { echo "error: the $side backend gave no median_frame_ms for '$label' (see $log)" >&2; exit 1; }
+    record "$r" "$label" "$side" "$ms" "$(last_rss)" "$(setup_ms <<<"$output")"
   done
 }
 
 # ---- the rounds --------------------------------------------------------------------
 for ((r = 1; r <= rounds; r++)); do
-  first=$([ $((r % 2)) = 1 ] && echo litkit || echo opengl)
+  first=$([ $((r % 2)) = 1 ] && echo cpu || echo gl)
   idle=$(idle_percent)
   echo "round $r/$rounds (machine ${idle}% idle before it) ..." >&2
   [ "$idle" -ge 90 ] || busy_rounds+=" $r (${idle}% idle)"
@@ -262,36 +259,39 @@ for ((r = 1; r <= rounds; r++)); do
 done
 
 # ---- the table ---------------------------------------------------------------------
-med_of() {  # label, side, column (4 ms, 5 rss) -> median over rounds
+med_of() {  # label, side, column (4 ms, 5 rss, 6 setup) -> median over rounds
   awk -F'\t' -v l="$1" -v s="$2" -v c="$3" '$2 == l && $3 == s && $c != "" { print $c }' "$raw" | median
 }
 mib() { [ "$1" = nan ] && echo "-" || awk -v k="$1" 'BEGIN { printf "%.0f", k / 1024 }'; }
+ms2() { [ "$1" = nan ] && echo "-" || printf %.2f "$1"; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "nan" || b == "nan" || a <= 0) print "-"; else printf "%.2f", b / a }'; }
 
 # The lowest and highest of the per-round ratios: how much the rounds agree.
 spread() {
-  awk -F'\t' -v l="$1" '$2 == l && $3 == "litkit" { a[$1] = $4 } $2 == l && $3 == "opengl" { b[$1] = $4 }
+  awk -F'\t' -v l="$1" '$2 == l && $3 == "cpu" { a[$1] = $4 } $2 == l && $3 == "gl" { b[$1] = $4 }
     END { n = 0; for (r in a) if ((r in b) && a[r] > 0) { q = b[r] / a[r]; if (!n || q < lo) lo = q; if (!n || q > hi) hi = q; n++ }
           if (n) printf "%.2f-%.2f", lo, hi; else print "-" }' "$raw"
 }
-line() { printf '%-28s %10s %10s %7s %11s %11s %11s\n' "$@"; }
-line "scene (1920x1080 unless said)" "litkit ms" "OpenGL ms" "ratio" "per round" "litkit MiB" "OpenGL MiB"
-line "----------------------------" "---------" "---------" "-----" "---------" "----------" "----------"
+line() { printf '%-28s %9s %9s %6s %11s %8s %8s %9s %9s\n' "$@"; }
+line "scene (1920x1080 unless said)" "CPU ms" "GL ms" "ratio" "per round" "CPU MiB" "GL MiB" "CPU setup" "GL setup"
+line "----------------------------" "------" "-----" "-----" "---------" "-------" "------" "---------" "--------"
 for label in "default 800x600 to PNG" "default 1920x1080 to PNG"; do
-  a=$(med_of "$label" litkit 4); b=$(med_of "$label" opengl 4)
+  a=$(med_of "$label" cpu 4); b=$(med_of "$label" gl 4)
   line "$label" "$(printf %.1f "$a")" "$(printf %.1f "$b")" "$(ratio "$a" "$b")" "$(spread "$label")" \
-       "$(mib "$(med_of "$label" litkit-rss 5)")" "$(mib "$(med_of "$label" opengl-rss 5)")"
+       "$(mib "$(med_of "$label" cpu-rss 5)")" "$(mib "$(med_of "$label" gl-rss 5)")" "-" "-"
 done
 for row in "${rows[@]}"; do
   label=${row%%|*}
-  a=$(med_of "$label" litkit 4); b=$(med_of "$label" opengl 4)
+  a=$(med_of "$label" cpu 4); b=$(med_of "$label" gl 4)
   line "$label" "$(printf %.2f "$a")" "$(printf %.2f "$b")" "$(ratio "$a" "$b")" "$(spread "$label")" \
-       "$(mib "$(med_of "$label" litkit 5)")" "$(mib "$(med_of "$label" opengl 5)")"
+       "$(mib "$(med_of "$label" cpu 5)")" "$(mib "$(med_of "$label" gl 5)")" \
+       "$(ms2 "$(med_of "$label" cpu 6)")" "$(ms2 "$(med_of "$label" gl 6)")"
 done
 echo
-echo "ratio = OpenGL time / litkit time (> 1: litkit faster), of the medians over $rounds round(s);"
+echo "ratio = GL time / CPU time (> 1: the CPU backend is faster), of the medians over $rounds round(s);"
 echo "per round: the lowest and highest ratio of a single round (both sides run back to back)."
-echo "to PNG rows: whole process, start to file written; the others: median frame time."
+echo "to PNG rows: whole process, start to file written; the others: median frame time;"
+echo "setup: once per run, before the frames (GL: EGL context, shader compilation, upload)."
 idle=$(idle_percent)
 [ "$idle" -ge 90 ] || busy_rounds+=" end (${idle}% idle)"
 [ -z "$busy_rounds" ] || echo "warning: the machine was busy before or after round(s)$busy_rounds: rerun on a quiet machine"
