@@ -1,8 +1,6 @@
 #include "litkit/export.hpp"
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -10,6 +8,7 @@
 
 #include "export/embedded_text.hpp"
 #include "gl_scene.hpp"
+#include "glsl_expr.hpp"
 #include "litkit/error.hpp"
 #include "litkit/files.hpp"
 #include "litkit/glsl.hpp"
@@ -64,27 +63,9 @@ void make_directory(const fs::path& directory) {
                       IoError::Access::Write);
 }
 
-// The shortest float literal that reads back as the same float, in plain
-// decimals where that is short ("0.05f", "20.0f") and otherwise in
-// exponent form ("1e-07f").
-std::string float_literal(float value) {
-    char text[48];
-    const float magnitude = std::fabs(value);
-    bool found = false;
-    if (value == 0.0f || (magnitude >= 1e-4f && magnitude < 1e7f)) {
-        for (int decimals = 1; decimals <= 12 && !found; ++decimals) {
-            std::snprintf(text, sizeof text, "%.*f", decimals, static_cast<double>(value));
-            found = std::strtof(text, nullptr) == value;
-        }
-    }
-    for (int digits = 1; digits <= 9 && !found; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
-        found = std::strtof(text, nullptr) == value;
-    }
-    std::string literal = text;
-    if (literal.find_first_of(".en") == std::string::npos) literal += ".0";
-    return literal + "f";
-}
+// A C++ float literal that reads back as the same float: the GLSL
+// generator's shortest round-trip text ("0.05", "20.0", "1e-07") plus "f".
+std::string float_literal(float value) { return glsl::float_literal(value) + "f"; }
 
 // "a, b, c" (appended piece by piece: GCC 12 warns falsely on "literal" + string&&).
 std::string vec3_components(const glm::vec3& v) {
