@@ -422,7 +422,7 @@ void add_incidence_outputs(Function& function, const equations::Incidence<Expr>&
 Function directional_incidence_function() {
     Function function;
     function.doc =
-        "Directional light (SPEC sec. 4): L = -normalize(direction), f = 1.\n"
+        "Directional light: L = -normalize(direction), f = 1.\n"
         "travel_unit: the normalised direction the light travels.";
     function.return_type = "Incidence";
     function.name = "directional_incidence";
@@ -434,7 +434,7 @@ Function directional_incidence_function() {
 Function point_incidence_function() {
     Function function;
     function.doc =
-        "Point light (SPEC sec. 4): L = normalize(position - p),\n"
+        "Point light: L = normalize(position - p),\n"
         "f = 1 / (k_c + k_l*d + k_q*d^2) with d = |position - p| and attenuation = (k_c, k_l, "
         "k_q).";
     function.return_type = "Incidence";
@@ -456,7 +456,7 @@ Function point_incidence_function() {
 Function spot_factor_function() {
     Function function;
     function.doc =
-        "Spot cone (SPEC sec. 4): c = -L.axis; s = c^exponent where c >= cos(cutoff) (0^0 = 1),\n"
+        "Spot cone: c = -L.axis; s = c^exponent where c >= cos(cutoff) (0^0 = 1),\n"
         "else 0. axis_unit: the normalised spot direction; cos_cutoff as in\n"
         "equations::PreparedLight (boundary slack included).";
     function.return_type = "float";
@@ -489,7 +489,7 @@ Function reflection_terms_function(Reflection reflection) {
 
     const std::string intro = "Diffuse D and specular S of the " +
                               std::string(to_string(reflection)) +
-                              " reflection model (SPEC sec. 4, ";
+                              " reflection model (";
     const Expr n_dot_l = equations::dot(normal, to_light);
     function.hints.push_back({"n_dot_l", n_dot_l});
     switch (reflection) {
@@ -532,7 +532,7 @@ Function reflection_terms_function(Reflection reflection) {
 
 Function ambient_term_function() {
     Function function;
-    function.doc = "Ambient light (SPEC sec. 4): k_a * C * I_L, per channel.";
+    function.doc = "Ambient light: k_a * C * I_L, per channel.";
     function.return_type = "vec3";
     function.name = "ambient_term";
     function.parameters = "vec3 radiance, Material material";
@@ -545,7 +545,7 @@ Function ambient_term_function() {
 Function direct_term_function() {
     Function function;
     function.doc =
-        "Any other light (SPEC sec. 4): f * I_L * (k_d * D * C + k_s * S), per channel;\n"
+        "Any other light: f * I_L * (k_d * D * C + k_s * S), per channel;\n"
         "the specular part takes the light's colour.";
     function.return_type = "vec3";
     function.name = "direct_term";
@@ -618,11 +618,12 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            std::string(stage) + " shader for reflection \"" + std::string(to_string(reflection)) +
            "\", shading \"" + std::string(to_string(shading)) +
            "\".\n"
-           "// Do not edit; regenerate with `litkit export --format glsl`.\n"
+           "// Regenerate it with `litkit export` rather than edit it.\n"
            "//\n"
-           "// The lighting functions are litkit's equations (SPEC sec. 4), generated from the\n"
-           "// same C++ templates as the CPU renderer, so that both evaluate the same float\n"
-           "// operations in the same order.\n"
+           "// The lighting functions are litkit's equations (docs/user-guide.md, \"The\n"
+           "// lighting models\"), generated from the same C++ templates as the CPU\n"
+           "// renderer: the same operations in the same order (a compiler may still fuse\n"
+           "// a * b + c into one rounding; GLSL 3.30 cannot forbid it).\n"
            "//\n"
            "// The program's interface (both stages):\n"
            "//   vertex inputs, world space:\n"
@@ -642,9 +643,10 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "direction\n"
            "//                                   (unit; directional: travel, spot: axis),\n"
            "//                                   attenuation (k_c, k_l, k_q), cos_cutoff (cosine\n"
-           "//                                   of the half-angle less the slack), exponent\n"
+           "//                                   of the half-angle less 1e-6, so that the cone's\n"
+           "//                                   boundary counts as inside), exponent\n"
            "//     float u_inv_gamma             1 / gamma\n"
-           "//   fragment output: vec4 frag_color, the pixel value of SPEC sec. 4, a multiple of\n"
+           "//   fragment output: vec4 frag_color, the pixel value litkit defines, a multiple of\n"
            "//   1/255 (exact in RGBA8), alpha 1\n";
 }
 
@@ -696,7 +698,7 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "uniform int u_light_count;\n"
         "uniform Light u_lights[MAX_LIGHTS];\n"
         "\n"
-        "// pow as C and the CPU path define it, x^0 = 1 for every x (SPEC sec. 4: 0^0 = 1);\n"
+        "// pow as C and the CPU path define it, x^0 = 1 for every x (litkit: 0^0 = 1);\n"
         "// GLSL leaves pow(0, 0) undefined.\n"
         "float power(float x, float y) {\n"
         "    return y == 0.0 ? 1.0 : pow(x, y);\n"
@@ -712,7 +714,7 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
     text +=
         "\n"
         "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
-        "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V (SPEC sec. 4),\n"
+        "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V,\n"
         "// unclamped. Hand-written (the lights are uniforms here) and kept line for line\n"
         "// parallel to equations::shade_point: change one, change the other.\n"
         "vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {\n"
@@ -753,7 +755,7 @@ const char* const to_pixel_function =
     "\n"
     "uniform float u_inv_gamma;\n"
     "\n"
-    "// The pixel value of SPEC sec. 4, round(255 * clamp(I, 0, 1)^(1/gamma)) with halves up,\n"
+    "// The pixel value litkit defines, round(255 * clamp(I, 0, 1)^(1/gamma)) with halves up,\n"
     "// as litkit::to_pixel computes it (NaN -> 0), divided by 255 so that the conversion\n"
     "// to RGBA8 is exact.\n"
     "vec3 to_pixel(vec3 intensity) {\n"
@@ -790,7 +792,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
             vertex += lighting_declarations(reflection, light_capacity);
             vertex +=
                 "\n"
-                "// SPEC sec. 3 flat: lit once per triangle, at its centroid, with the face\n"
+                "// Flat shading: lit once per triangle, at its centroid, with the face\n"
                 "// normal. All three vertices of a triangle carry the same centroid and\n"
                 "// normal, so v_color is the same at each and does not depend on the\n"
                 "// provoking vertex.\n"
@@ -817,7 +819,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
             vertex += lighting_declarations(reflection, light_capacity);
             vertex +=
                 "\n"
-                "// SPEC sec. 3 Gouraud: lit at each vertex with its vertex normal; the colour,\n"
+                "// Gouraud shading: lit at each vertex with its vertex normal; the colour,\n"
                 "// unclamped, is interpolated perspective-correctly (smooth).\n"
                 "out vec3 v_color;\n"
                 "\n"
@@ -841,7 +843,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
         case Shading::Phong:
             vertex +=
                 "\n"
-                "// SPEC sec. 3 Phong: world position and vertex normal, interpolated\n"
+                "// Phong shading: world position and vertex normal, interpolated\n"
                 "// perspective-correctly (smooth); lit per fragment.\n"
                 "out vec3 v_position;\n"
                 "out vec3 v_normal;\n"
@@ -862,7 +864,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
             fragment += to_pixel_function;
             fragment +=
                 "\n"
-                "// SPEC sec. 3 Phong: lit at the interpolated position with the interpolated\n"
+                "// Phong shading: lit at the interpolated position with the interpolated\n"
                 "// normal, renormalised (DD10).\n"
                 "void main() {\n"
                 "    vec3 normal = unit_vector(v_normal);\n"

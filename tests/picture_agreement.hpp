@@ -40,29 +40,49 @@ struct Agreement {
     std::size_t counted = 0;  // interior pixels covered by an object
     std::size_t within = 0;   // of those, every channel within 2/255
     int worst = 0;
+    std::size_t background_counted = 0;  // pixels with only background around them
+    std::size_t background_differing = 0;  // of those, not exactly equal
+    std::size_t pixels = 0;          // every pixel, edges included
+    std::size_t pixels_within = 0;   // of those, every channel within 2/255
     double fraction() const { return counted ? double(within) / double(counted) : 0.0; }
+    double fraction_of_all() const { return pixels ? double(pixels_within) / double(pixels) : 0.0; }
 };
 
 // Compares the pixels of `a` and `b` whose 3×3 neighbourhood in `label` is
-// one object (background-only neighbourhoods are not counted: both backends
-// clear to the same colour exactly).
+// one object; also counts the background pixels that differ at all (both
+// backends clear to the same colour exactly) and, for a coarse check that
+// includes edges, every pixel.
 inline Agreement agreement(const litkit::Image& a, const litkit::Image& b, const litkit::Image& label) {
     Agreement result;
     auto label_at = [&](int x, int y) {
         const std::uint8_t* p = label.pixel(x, y);
         return (p[0] << 16) | (p[1] << 8) | p[2];
     };
+    auto difference_at = [&](int x, int y) {
+        int difference = 0;
+        for (int c = 0; c < 3; ++c)
+            difference = std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+        return difference;
+    };
+    for (int y = 0; y < label.height; ++y) {
+        for (int x = 0; x < label.width; ++x) {
+            ++result.pixels;
+            result.pixels_within += difference_at(x, y) <= 2;
+        }
+    }
     for (int y = 1; y + 1 < label.height; ++y) {
         for (int x = 1; x + 1 < label.width; ++x) {
             const int centre = label_at(x, y);
-            if (centre == 0) continue;
             bool interior = true;
             for (int dy = -1; dy <= 1 && interior; ++dy)
                 for (int dx = -1; dx <= 1 && interior; ++dx) interior = label_at(x + dx, y + dy) == centre;
             if (!interior) continue;
-            int difference = 0;
-            for (int c = 0; c < 3; ++c)
-                difference = std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+            const int difference = difference_at(x, y);
+            if (centre == 0) {
+                ++result.background_counted;
+                result.background_differing += difference != 0;
+                continue;
+            }
             ++result.counted;
             result.within += difference <= 2;
             result.worst = std::max(result.worst, difference);

@@ -73,6 +73,7 @@ direction = [-1, -1, -0.5]
 color = [255, 230, 200]
 
 [[lights]]
+name = "{{OBJECTS}} is only a name"   # never read as the exporter's own markers
 type = "point"
 position = [2, 2, 2]
 attenuation = [1, 0, 0.05]
@@ -187,7 +188,8 @@ TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
     EXPECT_TRUE(fs::exists(dir / "program" / "CMakeLists.txt"));
 
     const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
-                              quoted(dir / "program" / "build"));
+                              quoted(dir / "program" / "build") +
+                              " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
     ASSERT_EQ(configure.status, 0) << configure.output;
     const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
     ASSERT_EQ(build.status, 0) << build.output;
@@ -246,6 +248,29 @@ TEST_F(Export, RejectsAProgramNameThatIsNotAnIdentifier) {
     EXPECT_EQ(bad.status, 2) << bad.output;
     EXPECT_NE(bad.output.find("not a C identifier"), std::string::npos) << bad.output;
     EXPECT_FALSE(fs::exists(dir / "program"));
+}
+
+TEST_F(Export, RejectsAProgramNameCMakeKeepsForItself) {
+    const Outcome bad = cli("export --format cpp mixed.toml -o program --name all");
+    EXPECT_EQ(bad.status, 2) << bad.output;
+    EXPECT_NE(bad.output.find("CMake keeps"), std::string::npos) << bad.output;
+}
+
+TEST_F(Export, PrintsBuildCommandsThatSurviveSpacesInPaths) {
+    const Outcome exported = cli("export --format cpp mixed.toml -o 'my program'");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_NE(exported.output.find("cmake -S 'my program' -B 'my program/build'"), std::string::npos)
+        << exported.output;
+}
+
+TEST_F(Export, GlslOfASceneWithoutObjectsIsTheScenesOwnPair) {
+    std::ofstream(dir / "empty.toml") << "[room]\nwidth = 4\nheight = 4\ndepth = 4\n"
+                                         "[observer]\nposition = [0, 0, 1]\n"
+                                         "[lighting]\nreflection = \"lambert\"\nshading = \"gouraud\"\n";
+    const Outcome exported = cli("export --format glsl empty.toml -o shaders");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_TRUE(fs::exists(dir / "shaders" / "lambert-gouraud.vert")) << exported.output;
+    EXPECT_TRUE(fs::exists(dir / "shaders" / "lambert-gouraud.frag"));
 }
 
 TEST_F(Export, NeedsAFormatAndAFolder) {

@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,15 @@ Comparison compare_backends(const litkit::Scene& scene) {
     EXPECT_EQ(gpu.width, cpu.width);
     EXPECT_EQ(gpu.height, cpu.height);
     return {agreement(gpu, cpu, labels(scene)), cpu.rgb.size() / 3};
+}
+
+// Beyond the interior: the background exactly, and every pixel, edges
+// included, nearly everywhere (an offset of half a pixel, a flipped row or a
+// wrong clear colour would fail these).
+void expect_edges_and_background_agree(const Agreement& a) {
+    EXPECT_GT(a.background_counted, 0u);
+    EXPECT_EQ(a.background_differing, 0u);
+    EXPECT_GE(a.fraction_of_all(), 0.995) << "edges included";
 }
 
 // The matrix scenes: one object, one light of the kind asked for (plus a dim
@@ -92,8 +104,68 @@ litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection
 
 TEST(GlBackend, ReportsTheRenderer) {
     litkit::GlRenderer gl(litkit::default_scene());
-    EXPECT_FALSE(gl.description().empty());
+    // "<GL_RENDERER>, OpenGL <major>.<minor> ...", with a version of at least 3.3.
+    const std::string description = gl.description();
+    const std::size_t at = description.find(", OpenGL ");
+    ASSERT_NE(at, std::string::npos) << description;
+    EXPECT_GT(at, 0u) << "no renderer name: " << description;
+    const int major = std::atoi(description.c_str() + at + 9);
+    EXPECT_GE(major, 3) << description;
     EXPECT_EQ(gl.triangle_count(), 12u);
+}
+
+TEST(GlBackend, SeveralRenderersInOneProcessEachDrawTheirOwnScene) {
+    const litkit::Scene sphere_scene = matrix_scene(Shape::Sphere, LightType::Point,
+                                                    litkit::Reflection::Phong, litkit::Shading::Phong);
+    const litkit::Scene cube_scene = matrix_scene(Shape::Cube, LightType::Spot,
+                                                  litkit::Reflection::Lambert, litkit::Shading::Flat);
+    litkit::Image sphere_alone, cube_alone;
+    {
+        litkit::GlRenderer gl(sphere_scene);
+        sphere_alone = gl.render();
+    }
+    {
+        litkit::GlRenderer gl(cube_scene);
+        cube_alone = gl.render();
+    }
+    ASSERT_NE(sphere_alone.rgb, cube_alone.rgb);
+
+    auto sphere = std::make_unique<litkit::GlRenderer>(sphere_scene);
+    auto cube = std::make_unique<litkit::GlRenderer>(cube_scene);  // created last
+    EXPECT_EQ(sphere->render().rgb, sphere_alone.rgb);
+    EXPECT_EQ(cube->render().rgb, cube_alone.rgb);
+    EXPECT_EQ(sphere->render().rgb, sphere_alone.rgb);
+    cube.reset();  // ending one leaves the other working
+    EXPECT_EQ(sphere->render().rgb, sphere_alone.rgb);
+    cube = std::make_unique<litkit::GlRenderer>(cube_scene);
+    sphere.reset();
+    EXPECT_EQ(cube->render().rgb, cube_alone.rgb);
+}
+
+TEST(GlBackend, SceneWithoutLightsOrObjectsMatchesCpuExactly) {
+    litkit::Scene dark = matrix_scene(Shape::Cube, LightType::Point, litkit::Reflection::Phong,
+                                      litkit::Shading::Phong);
+    dark.lights.clear();  // black cube on the background
+    EXPECT_EQ(litkit::GlRenderer(dark).render().rgb, litkit::render(dark).rgb);
+    litkit::Scene empty = dark;
+    empty.objects.clear();  // background only
+    EXPECT_EQ(litkit::GlRenderer(empty).render().rgb, litkit::render(empty).rgb);
+}
+
+TEST(GlBackend, ManyLights) {
+    // 40 point lights around the sphere: one program sized for all of them.
+    litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Ambient, litkit::Reflection::BlinnPhong,
+                                       litkit::Shading::Phong);
+    for (int i = 0; i < 40; ++i) {
+        const float angle = 0.157f * static_cast<float>(i);
+        litkit::Light light{litkit::PointLight{{3.0f * std::cos(angle), 1.5f, 3.0f * std::sin(angle)},
+                                               {1.0f, 0.0f, 0.0f}},
+                            glm::vec3(1.0f), 0.03f};
+        scene.lights.push_back({"ring", light});
+    }
+    const Comparison c = compare_backends(scene);
+    EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst;
+    expect_edges_and_background_agree(c.agreement);
 }
 
 TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
@@ -119,6 +191,7 @@ TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
                     EXPECT_GT(c.agreement.counted, c.pixels / 10);
                     EXPECT_GE(c.agreement.fraction(), required_fraction)
                         << "worst " << c.agreement.worst << "/255";
+                    expect_edges_and_background_agree(c.agreement);
                     lowest = std::min(lowest, c.agreement.fraction());
                     worst = std::max(worst, c.agreement.worst);
                     ++cases;
@@ -149,6 +222,7 @@ TEST(GlBackend, MatchesCpuOnEveryExample) {
         const Comparison c = compare_backends(scene);
         EXPECT_GT(c.agreement.counted, c.pixels / 50);
         EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst << "/255";
+        expect_edges_and_background_agree(c.agreement);
         std::cout << files.front().filename().string() << ": " << c.agreement.counted
                   << " interior pixels, fraction within 2/255 " << c.agreement.fraction()
                   << ", largest difference " << c.agreement.worst << "/255\n";

@@ -216,7 +216,8 @@ int run_render(const RenderArguments& arguments) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
               << ", " << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
-              << " ms)\n";
+              << " ms" << (arguments.scene.backend == "gl" ? "; " + renderer.description() : "")
+              << ")\n";
     return exit_success;
 }
 

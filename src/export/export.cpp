@@ -1,6 +1,9 @@
 #include "litkit/export.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -96,10 +99,41 @@ std::string printable(std::string_view text) {
     return out;
 }
 
-void replace_all(std::string& text, std::string_view marker, std::string_view value) {
-    for (std::size_t at = text.find(marker); at != std::string::npos;
-         at = text.find(marker, at + value.size()))
-        text.replace(at, marker.size(), value);
+// Replaces every {{MARKER}} of `text` in one pass, so that nothing pasted in
+// (a light's name, say) is ever read as a marker. Unknown markers are a bug.
+std::string fill_template(std::string_view text,
+                          const std::vector<std::pair<std::string_view, std::string>>& values) {
+    std::string out;
+    out.reserve(text.size());
+    std::size_t at = 0;
+    for (std::size_t open = text.find("{{"); open != std::string_view::npos;
+         open = text.find("{{", at)) {
+        const std::size_t close = text.find("}}", open);
+        if (close == std::string_view::npos) break;
+        const std::string_view marker = text.substr(open + 2, close - open - 2);
+        auto value = std::find_if(values.begin(), values.end(),
+                                  [&](const auto& entry) { return entry.first == marker; });
+        if (value == values.end())
+            throw std::logic_error("export: the program template has an unknown marker {{" +
+                                   std::string(marker) + "}}");
+        out.append(text.substr(at, open - at));
+        out += value->second;
+        at = close + 2;
+    }
+    out.append(text.substr(at));
+    return out;
+}
+
+// `path` as one word for sh: as it is when plain, else in single quotes.
+std::string shell_word(const std::string& path) {
+    const bool plain = !path.empty() && std::all_of(path.begin(), path.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '-' || c == '.' || c == '/' || c == '+' || c == ',';
+    });
+    if (plain) return path;
+    std::string word = "'";
+    for (char c : path) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return word + "'";
 }
 
 std::string light_kind_name(equations::PreparedLight::Kind kind) {
@@ -124,8 +158,15 @@ std::string lights_source(const Scene& scene) {
         using Kind = equations::PreparedLight::Kind;
         const equations::PreparedLight& l = lights[i];
         const std::string& name = scene.lights[i].name;
+        const Light& source = scene.lights[i].light;
         out += "    // light " + std::to_string(i);
         if (!name.empty()) out += " \"" + printable(name) + "\"";
+        out += ": colour [" + std::to_string(std::lround(source.color.r * 255.0f)) + ", " +
+               std::to_string(std::lround(source.color.g * 255.0f)) + ", " +
+               std::to_string(std::lround(source.color.b * 255.0f)) + "], intensity " +
+               glsl::float_literal(source.intensity);
+        if (const auto* spot = std::get_if<SpotLight>(&source.kind))
+            out += ", cutoff " + glsl::float_literal(spot->cutoff_degrees) + " degrees";
         out += "\n    {.kind = " + light_kind_name(l.kind) + ",\n     .radiance = " + vec3_braces(l.radiance);
         if (l.kind == Kind::Point || l.kind == Kind::Spot) {
             out += ",\n     .position = " + vec3_braces(l.position);
@@ -230,6 +271,15 @@ void check_new(const std::vector<fs::path>& files, const ExportOptions& options)
     }
 }
 
+// CMake keeps these target names for itself.
+bool is_reserved_by_cmake(const std::string& name) {
+    static const char* const reserved[] = {"all", "clean", "help", "install", "test", "package",
+                                           "package_source", "edit_cache", "rebuild_cache",
+                                           "list_install_components", "preinstall", "depend"};
+    return std::any_of(std::begin(reserved), std::end(reserved),
+                       [&](const char* word) { return name == word; });
+}
+
 bool is_identifier(const std::string& name) {
     if (name.empty() || name.size() > 64) return false;
     for (std::size_t i = 0; i < name.size(); ++i) {
@@ -244,9 +294,14 @@ bool is_identifier(const std::string& name) {
 
 std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
                                   const ExportOptions& options) {
+    std::vector<ModelPair> pairs = object_models(scene, options).pairs;
+    if (pairs.empty()) {  // no objects: the scene's own models, ready for some
+        pairs.push_back({scene.reflection.value_or(options.fallback_reflection),
+                         scene.shading.value_or(options.fallback_shading)});
+    }
     std::vector<fs::path> files;
     std::vector<std::string> texts;
-    for (const ModelPair& pair : object_models(scene, options).pairs) {
+    for (const ModelPair& pair : pairs) {
         glsl::Shaders shaders = glsl::generate(pair.first, pair.second, light_capacity(scene));
         const std::string stem = pair_file_stem(pair);
         files.push_back(directory / (stem + ".vert"));
@@ -266,33 +321,35 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
     if (!is_identifier(program_name))
         throw std::invalid_argument("program name '" + program_name +
                                     "' is not a C identifier (letters, digits, _)");
+    if (is_reserved_by_cmake(program_name))
+        throw std::invalid_argument("program name '" + program_name +
+                                    "' is a target name CMake keeps for itself; choose another");
     const ObjectModels models = object_models(scene, options);
     const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first
 
-    std::string program = detail::program_template_text;
     const Observer& o = scene.observer;
     const auto& bg = scene.output.background;
-    replace_all(program, "{{CORE}}", detail::opengl_core_text);
-    replace_all(program, "{{SHADERS}}", shaders_source(models, light_capacity(scene)));
-    replace_all(program, "{{WIDTH}}", std::to_string(scene.output.width));
-    replace_all(program, "{{HEIGHT}}", std::to_string(scene.output.height));
-    replace_all(program, "{{BACKGROUND}}",
-                "glm::vec3(" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " +
-                    std::to_string(bg[2]) + ") / 255.0f");
-    replace_all(program, "{{GAMMA}}", float_literal(scene.output.gamma));
-    replace_all(program, "{{EYE}}", vec3_literal(o.position));
-    replace_all(program, "{{LOOK_AT}}", vec3_literal(o.look_at));
-    replace_all(program, "{{UP}}", vec3_literal(o.up));
-    replace_all(program, "{{FOV}}", float_literal(o.fov_degrees));
-    replace_all(program, "{{NEAR}}", float_literal(o.near));
-    replace_all(program, "{{FAR}}", float_literal(o.far));
-    replace_all(program, "{{LIGHTS}}", lights_source(scene));
-    replace_all(program, "{{GEOMETRY}}", geometry.arrays);
-    replace_all(program, "{{OBJECTS}}", geometry.objects);
-    // Last: these may appear in the texts pasted above.
-    replace_all(program, "{{SCENE}}", wrapped("\"", printable(scene_label), "\""));
-    replace_all(program, "{{VERSION}}", LITKIT_VERSION);
-    replace_all(program, "{{NAME}}", program_name);
+    const std::string program = fill_template(
+        detail::program_template_text,
+        {{"CORE", detail::opengl_core_text},
+         {"SHADERS", shaders_source(models, light_capacity(scene))},
+         {"WIDTH", std::to_string(scene.output.width)},
+         {"HEIGHT", std::to_string(scene.output.height)},
+         {"BACKGROUND", "glm::vec3(" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " +
+                            std::to_string(bg[2]) + ") / 255.0f"},
+         {"GAMMA", float_literal(scene.output.gamma)},
+         {"EYE", vec3_literal(o.position)},
+         {"LOOK_AT", vec3_literal(o.look_at)},
+         {"UP", vec3_literal(o.up)},
+         {"FOV", float_literal(o.fov_degrees)},
+         {"NEAR", float_literal(o.near)},
+         {"FAR", float_literal(o.far)},
+         {"LIGHTS", lights_source(scene)},
+         {"GEOMETRY", geometry.arrays},
+         {"OBJECTS", geometry.objects},
+         {"SCENE", wrapped("\"", printable(scene_label), "\"")},
+         {"VERSION", LITKIT_VERSION},
+         {"NAME", program_name}});
 
     const std::string cmake =
         "# Builds " + program_name + " (generated by litkit " LITKIT_VERSION
@@ -329,9 +386,10 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
 }
 
 std::string export_cpp_instructions(const fs::path& directory, const std::string& program_name) {
-    const std::string dir = directory.string();
-    return "cmake -S " + dir + " -B " + dir + "/build && cmake --build " + dir + "/build && " + dir +
-           "/build/" + program_name;
+    const std::string dir = shell_word(directory.string());
+    const std::string build = shell_word((directory / "build").string());
+    const std::string binary = shell_word((directory / "build" / program_name).string());
+    return "cmake -S " + dir + " -B " + build + " && cmake --build " + build + " && " + binary;
 }
 
 }  // namespace litkit

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -27,13 +28,20 @@ namespace core {
 #include "opengl_core.inc"
 }  // namespace core
 
-// libepoxy loads libEGL on first use and aborts the process if it cannot;
-// looking first turns that into an error the caller can report.
-void require_egl_library() {
+// libepoxy loads libEGL, and libOpenGL or libGL, on first use and aborts the
+// process if it cannot; looking first turns that into an error the caller
+// can report.
+void require_gl_libraries() {
     if (dlopen("libEGL.so.1", RTLD_NOW | RTLD_GLOBAL) == nullptr) {
         const char* why = dlerror();
         throw GlError(std::string("OpenGL is not available: cannot load libEGL.so.1 (") +
                       (why ? why : "not found") + ")");
+    }
+    if (dlopen("libOpenGL.so.0", RTLD_NOW | RTLD_GLOBAL) == nullptr &&
+        dlopen("libGL.so.1", RTLD_NOW | RTLD_GLOBAL) == nullptr) {
+        throw GlError(
+            "OpenGL is not available: cannot load libOpenGL.so.0 or libGL.so.1 (Debian: libopengl0 "
+            "or libgl1)");
     }
 }
 
@@ -67,6 +75,11 @@ struct GlRenderer::Impl {
 
     ~Impl() {
         if (!context) return;
+        try {
+            context->make_current();  // another renderer's may be current
+        } catch (const std::runtime_error&) {
+            return;  // the context goes with its objects
+        }
         target.reset();
         for (core::GpuMesh& mesh : meshes) core::release_mesh(mesh);
         for (const auto& [key, program] : programs) glDeleteProgram(program);
@@ -74,7 +87,7 @@ struct GlRenderer::Impl {
 };
 
 GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::make_unique<Impl>()) {
-    require_egl_library();
+    require_gl_libraries();
     Impl& gl = *impl_;
     try {
         gl.context.emplace();
@@ -134,6 +147,7 @@ Image GlRenderer::render() {
 void GlRenderer::render_into(Image& image) {
     Impl& gl = *impl_;
     try {
+        gl.context->make_current();
         core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
     } catch (const std::runtime_error& error) {
         throw GlError(error.what());
@@ -146,6 +160,7 @@ void GlRenderer::render_into(Image& image) {
 std::size_t GlRenderer::triangle_count() const { return impl_->triangles; }
 
 std::string GlRenderer::description() const {
+    impl_->context->make_current();
     return gl_string(GL_RENDERER) + ", OpenGL " + gl_string(GL_VERSION);
 }
 
