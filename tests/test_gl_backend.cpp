@@ -152,6 +152,24 @@ TEST(GlBackend, SceneWithoutLightsOrObjectsMatchesCpuExactly) {
     EXPECT_EQ(litkit::GlRenderer(empty).render().rgb, litkit::render(empty).rgb);
 }
 
+TEST(GlBackend, MoreLightsThanAShaderHoldsIsAClearError) {
+    // 10,000 lights need about 240,000 uniform components; OpenGL 3.3 promises
+    // 1,024 and real drivers offer tens of thousands.
+    litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Ambient, litkit::Reflection::Phong,
+                                       litkit::Shading::Phong);
+    for (int i = 0; i < 10000; ++i) {
+        litkit::Light light{litkit::PointLight{{0.001f * static_cast<float>(i), 3.0f, 3.0f}}};
+        scene.lights.push_back({"crowd", light});
+    }
+    try {
+        litkit::GlRenderer gl(scene);
+        FAIL() << "10,000 lights linked";
+    } catch (const litkit::GlError& error) {
+        EXPECT_NE(std::string(error.what()).find("the scene has 10001 lights"), std::string::npos)
+            << error.what();
+    }
+}
+
 TEST(GlBackend, ManyLights) {
     // 40 point lights around the sphere: one program sized for all of them.
     litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Ambient, litkit::Reflection::BlinnPhong,

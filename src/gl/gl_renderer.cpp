@@ -54,6 +54,18 @@ core::MaterialData material_data(const Material& material) {
     return {material.color, material.ka, material.kd, material.ks, material.shininess};
 }
 
+// Every light is a uniform struct of about 24 components (vec3s padded to
+// four); a shader that will not link with many lights most likely ran out.
+std::string lights_hint(int lights) {
+    if (lights < 16) return "";
+    GLint vertex = 0, fragment = 0;
+    glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &vertex);
+    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &fragment);
+    const int room = std::min(vertex, fragment) / 24;
+    return " (the scene has " + std::to_string(lights) + " lights; this OpenGL has room for about " +
+           std::to_string(room) + " in a shader)";
+}
+
 std::string gl_string(GLenum name) {
     const GLubyte* text = glGetString(name);
     return text ? reinterpret_cast<const char*>(text) : "?";
@@ -108,7 +120,11 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::m
             auto [found, added] = gl.programs.try_emplace({reflection, shading}, 0);
             if (added) {
                 const glsl::Shaders shaders = glsl::generate(reflection, shading, capacity);
-                found->second = core::link_program(shaders.vertex, shaders.fragment);
+                try {
+                    found->second = core::link_program(shaders.vertex, shaders.fragment);
+                } catch (const std::runtime_error& error) {
+                    throw GlError(error.what() + lights_hint(capacity));
+                }
             }
             const detail::GlObject data = detail::gl_object(object, reflection, shading);
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
