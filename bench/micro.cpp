@@ -11,7 +11,7 @@
 #include "litkit/lighting.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
-#include "shade_kernel.hpp"
+#include "cpu/shade_kernel.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Tests of the GLSL generator (litkit/glsl.hpp, src/glsl_expr.hpp):
+// Tests of the GLSL generator (litkit/glsl.hpp, src/codegen/glsl_expr.hpp):
 //   - the expression type Expr and its printing (literals, precedence,
 //     builtins, common subexpressions);
 //   - the exact text of small generated functions, worked out by hand from
@@ -28,7 +28,7 @@
 #include <tuple>
 #include <vector>
 
-#include "../src/glsl_expr.hpp"
+#include "../src/codegen/glsl_expr.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/glsl.hpp"
 #include "litkit/lighting.hpp"

@@ -18,14 +18,14 @@
 #include <utility>
 #include <vector>
 
-#include "../gl_scene.hpp"
+#include "codegen/gl_scene.hpp"
 #include "litkit/glsl.hpp"
 
 namespace litkit {
 
 namespace {
 namespace core {
-#include "opengl_core.inc"
+#include "gl/opengl_core.inc"
 }  // namespace core
 
 // libepoxy loads libEGL, and libOpenGL or libGL, on first use and aborts the

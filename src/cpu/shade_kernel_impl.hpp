@@ -9,7 +9,7 @@
 #include <xsimd/xsimd.hpp>
 
 
-#include "shade_kernel.hpp"
+#include "cpu/shade_kernel.hpp"
 
 namespace litkit::kernels::detail {
 

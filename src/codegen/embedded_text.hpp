@@ -5,6 +5,6 @@
 namespace litkit::detail {
 
 extern const char* const opengl_core_text;       // src/gl/opengl_core.inc
-extern const char* const program_template_text;  // src/export/program.cpp.in
+extern const char* const program_template_text;  // src/codegen/program.cpp.in
 
 }  // namespace litkit::detail

@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "litkit/equations.hpp"
-#include "shade_kernel.hpp"
-#include "thread_pool.hpp"
+#include "cpu/shade_kernel.hpp"
+#include "cpu/thread_pool.hpp"
 
 namespace litkit {
 

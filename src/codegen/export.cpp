@@ -9,9 +9,9 @@
 #include <system_error>
 #include <utility>
 
-#include "export/embedded_text.hpp"
-#include "gl_scene.hpp"
-#include "glsl_expr.hpp"
+#include "codegen/embedded_text.hpp"
+#include "codegen/gl_scene.hpp"
+#include "codegen/glsl_expr.hpp"
 #include "litkit/error.hpp"
 #include "litkit/files.hpp"
 #include "litkit/glsl.hpp"

@@ -1,4 +1,4 @@
-#include "gl_scene.hpp"
+#include "codegen/gl_scene.hpp"
 
 #include "litkit/mesh.hpp"
 

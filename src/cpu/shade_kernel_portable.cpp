@@ -1,5 +1,5 @@
 // The kernels for any x86-64 (SSE2) or other CPU xsimd supports by default.
-#include "shade_kernel_impl.hpp"
+#include "cpu/shade_kernel_impl.hpp"
 
 namespace litkit::kernels {
 

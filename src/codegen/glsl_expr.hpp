@@ -136,6 +136,15 @@ struct Hint {
 std::string print_statements(std::span<const Output> outputs, std::span<const Hint> hints = {},
                              const PrintOptions& options = {}, std::string_view indent = "    ");
 
+// The same statements in their two parts, for a function body that declares
+// its result between them (glsl.cpp).
+struct Statements {
+    std::string temporaries;  // `float t0 = ...;` lines
+    std::string assignments;  // `target = ...;` or `return ...;` lines
+};
+Statements statements(std::span<const Output> outputs, std::span<const Hint> hints,
+                      const PrintOptions& options, std::string_view indent);
+
 // ---- Evaluation (tests and debugging) ----
 
 // Values of the variables, by name ("p.x").

@@ -1,4 +1,4 @@
-#include "shade_kernel.hpp"
+#include "cpu/shade_kernel.hpp"
 
 namespace litkit::kernels {
 

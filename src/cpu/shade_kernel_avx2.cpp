@@ -1,6 +1,6 @@
 // The kernels for AVX2 with FMA: 8 pixels per instruction. This file alone
 // is compiled with -mavx2 -mfma; it runs only where select_kernels finds them.
-#include "shade_kernel_impl.hpp"
+#include "cpu/shade_kernel_impl.hpp"
 
 namespace litkit::kernels {
 

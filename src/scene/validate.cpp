@@ -16,7 +16,7 @@
 
 #include "litkit/convex.hpp"
 #include "litkit/shapes.hpp"
-#include "validate_internal.hpp"
+#include "scene/validate_internal.hpp"
 
 namespace litkit {
 

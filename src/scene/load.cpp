@@ -1,0 +1,89 @@
+// Scene files (SPEC §5): reading them, parsing TOML, merging several files
+// into one Scene, and validating it (SPEC §6). Problems are collected, never
+// thrown one at a time, so that a run reports all of them.
+#include <cerrno>
+#include <cstdio>
+#include <memory>
+#include <system_error>
+
+#include "litkit/validate.hpp"
+#include "scene/reader.hpp"
+
+namespace litkit {
+
+namespace {
+
+namespace fs = std::filesystem;
+using detail::ParsedFile;
+using detail::SceneReader;
+
+// Parses TOML text; a syntax error or invalid UTF-8 makes the file one that
+// cannot be read (SPEC §6), located where parsing stopped.
+toml::table parse_toml(std::string_view text, const std::string& name) {
+    try {
+        return toml::parse(text, std::string_view(name));
+    } catch (const toml::parse_error& failure) {
+        const toml::source_position& where = failure.source().begin;
+        throw IoError(name, std::string(failure.description()),
+                      FileLoc{name, where.line, where.column});
+    }
+}
+
+std::string read_bytes(const fs::path& path) {
+    struct Closer {
+        void operator()(std::FILE* file) const { std::fclose(file); }
+    };
+    errno = 0;
+    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+    if (!file) throw IoError(path.string(), std::generic_category().message(errno));
+    std::string bytes;
+    char buffer[1 << 16];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
+        bytes.append(buffer, count);
+    // Reading a directory fails here, with EISDIR.
+    if (std::ferror(file.get())) throw IoError(path.string(), std::generic_category().message(errno));
+    return bytes;
+}
+
+Scene build_scene(std::span<const ParsedFile> files) {
+    Scene scene;
+    SceneReader reader(scene);
+    for (const ParsedFile& file : files) reader.read_file(file);
+    reader.check_required_tables(files);
+    std::vector<Diagnostic> diagnostics = reader.take_diagnostics();
+
+    // The value and geometry rules (validate.hpp) run too, so that one run
+    // reports every problem; entities with shape errors hold defaults in
+    // place of their bad values and are left out of the geometric checks.
+    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities())) {
+        if (diagnostic.severity == Severity::Warning)
+            scene.warnings.push_back(std::move(diagnostic));
+        else
+            diagnostics.push_back(std::move(diagnostic));
+    }
+    // A failed load still carries its warnings, for the caller to show.
+    if (!diagnostics.empty()) throw SceneError(std::move(diagnostics), std::move(scene.warnings));
+    return scene;
+}
+
+}  // namespace
+
+Scene load_scene(std::span<const std::filesystem::path> files) {
+    std::vector<ParsedFile> parsed;
+    parsed.reserve(files.size());
+    for (const fs::path& path : files) {
+        std::string name = path.string();
+        toml::table root = parse_toml(read_bytes(path), name);
+        parsed.push_back(ParsedFile{std::move(name), path.parent_path(), std::move(root)});
+    }
+    return build_scene(parsed);
+}
+
+Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name) {
+    std::string name = source_name.string();
+    ParsedFile file{name, source_name.parent_path(), parse_toml(toml_text, name)};
+    return build_scene(std::span(&file, 1));
+}
+
+}  // namespace litkit
