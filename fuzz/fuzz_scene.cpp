@@ -1,4 +1,4 @@
-// libFuzzer target over the scene loader (SPEC §6: "bad input never renders
+// libFuzzer target over the scene loader (docs/spec.md §6: "bad input never renders
 // and never crashes"). Any bytes may come in; the only acceptable ways out
 // are a Scene, a SceneError (invalid input) or an IoError (not UTF-8, not
 // TOML). Anything else — another exception, a crash, a sanitizer report, a

@@ -60,7 +60,7 @@ std::vector<Example> find_examples() {
         if (is_scene_file(entry)) {
             examples.push_back({entry.path().stem().string(), {entry.path()}});
         } else if (entry.is_directory()) {
-            // A folder is one scene split over its files (SPEC §5); the
+            // A folder is one scene split over its files (docs/spec.md §5); the
             // lights and objects arrays do not depend on which file comes
             // first, so sorted order is as good as any.
             Example example{entry.path().filename().string(), {}};

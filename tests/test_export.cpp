@@ -207,7 +207,7 @@ TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
     ASSERT_EQ(exported_png.height, 240);
     // The same OpenGL code on the same driver: the very same picture.
     EXPECT_EQ(exported_png.rgb, gl_png.rgb);
-    // And the picture SPEC.md defines, as the CPU backend draws it.
+    // And the picture docs/spec.md defines, as the CPU backend draws it.
     const fs::path scene_file = dir / "mixed.toml";
     const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
     const litkit_test::Agreement a =

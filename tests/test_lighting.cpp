@@ -1,4 +1,4 @@
-// Unit tests for the lighting equations of SPEC §4 (IM1–IM4, DD3–DD7, lights,
+// Unit tests for the lighting equations of docs/spec.md §4 (IM1–IM4, DD3–DD7, lights,
 // pixel value). Every expected value is worked out by hand in the comment
 // above its check; none is taken from the code under test.
 //
@@ -359,8 +359,8 @@ TEST(Phong, ZeroShininessGivesFullSpecularWhereReflectionDotEyeIsPositive) {
 }
 
 TEST(Phong, ZeroShininessGivesNoSpecularWhereReflectionDotEyeIsZero) {
-    // L = N, R = N. Eye at (1,0,0): V = (1,0,0), R·V = 0 exactly. SPEC: S = 0 where the
-    // base is ≤ 0 whatever α, never 0^0 = 1. k_d = 0 ⇒ I = 0.
+    // L = N, R = N. Eye at (1,0,0): V = (1,0,0), R·V = 0 exactly. docs/spec.md §4:
+    // S = 0 where the base is ≤ 0 whatever α, never 0^0 = 1. k_d = 0 ⇒ I = 0.
     Material material = make_material(white, 0.0f, 0.0f, 0.5f, 0.0f);
     glm::vec3 color = shade_one(Reflection::Phong, material, directional_light({0, -1, 0}), origin,
                                 up, {1, 0, 0});
@@ -943,7 +943,7 @@ TEST(ReflectionNames, RoundTripThroughParse) {
 }
 
 TEST(ReflectionNames, RejectMisspellings) {
-    // Values are lower-case and exact (SPEC §6).
+    // Values are lower-case and exact (docs/spec.md §6).
     for (std::string_view text :
          {"Phong", "blinn", "Blinn-Phong", "blinn_phong", "blinnphong", "half_lambert",
           "halflambert", "LAMBERT", " phong", "phong ", ""}) {

@@ -1,4 +1,4 @@
-// Unit tests for face normals, vertex normals and bounds (SPEC §2, DD8, DD9).
+// Unit tests for face normals, vertex normals and bounds (docs/spec.md §2, DD8, DD9).
 // Every expected value is worked out by hand in the comment above its check.
 #include <gtest/gtest.h>
 

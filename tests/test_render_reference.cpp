@@ -4,8 +4,8 @@
 // The reference takes nothing from the library but the local triangles of the
 // objects (make_sphere, make_cube, make_torus for the built-in shapes, and
 // object_mesh for teapots and mesh files; meshes have their own tests). The
-// world transform (SPEC §2), face and vertex normals (DD8, DD9), camera rays
-// (SPEC §1), shading models (SPEC §3) and lighting (SPEC §4) are all computed
+// world transform (docs/spec.md §2), face and vertex normals (DD8, DD9),
+// camera rays (§1), shading models (§3) and lighting (§4) are all computed
 // here, by hand, in double, for a whole scene: the nearest hit over all
 // objects, each with its own reflection and shading (or [lighting]'s).
 //
@@ -70,7 +70,7 @@ dvec3 normalize_or_zero(const dvec3& v) {
     return length > 0.0 ? v / length : dvec3(0.0);
 }
 
-// ---- Geometry (SPEC §2) ----
+// ---- Geometry (docs/spec.md §2) ----
 
 // Rotations about the axes, right-handed, angle in degrees.
 dvec3 rotate_x(const dvec3& v, double degrees) {
@@ -86,7 +86,7 @@ dvec3 rotate_z(const dvec3& v, double degrees) {
     return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
-// world = T(position) · Rz · Ry · Rx · S(scale) · local (SPEC §2).
+// world = T(position) · Rz · Ry · Rx · S(scale) · local (docs/spec.md §2).
 dvec3 local_to_world(const litkit::SceneObject& object, const glm::vec3& local) {
     dvec3 rotation = to_double(object.rotation_degrees);
     dvec3 scaled = double(object.scale) * to_double(local);
@@ -155,7 +155,7 @@ std::vector<std::size_t> weld_positions(const litkit::Mesh& mesh) {
     return parent;
 }
 
-// ---- Lights and materials in double (SPEC §4) ----
+// ---- Lights and materials in double (docs/spec.md §4) ----
 
 struct RefLight {
     enum class Kind { Ambient, Directional, Point, Spot } kind = Kind::Ambient;
@@ -214,7 +214,7 @@ struct Lit {
     double cone_margin = std::numeric_limits<double>::infinity();
 };
 
-// I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S), SPEC §4.
+// I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S), docs/spec.md §4.
 Lit light_point(litkit::Reflection reflection, const RefMaterial& material,
                 const std::vector<RefLight>& lights, const dvec3& p, const dvec3& normal,
                 const dvec3& eye) {
@@ -278,7 +278,7 @@ Lit light_point(litkit::Reflection reflection, const RefMaterial& material,
     return lit;
 }
 
-// round(255 · clamp(I, 0, 1)^(1/gamma)), SPEC §4.
+// round(255 · clamp(I, 0, 1)^(1/gamma)), docs/spec.md §4.
 std::uint8_t to_byte(double intensity, double gamma) {
     const double clamped = std::clamp(intensity, 0.0, 1.0);
     return static_cast<std::uint8_t>(std::lround(255.0 * std::pow(clamped, 1.0 / gamma)));
@@ -357,7 +357,7 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
             ref.front.push_back(static_cast<std::uint32_t>(k));
     }
 
-    // SPEC §3: flat lights each triangle once at its centroid with its face
+    // docs/spec.md §3: flat lights each triangle once at its centroid with its face
     // normal; Gouraud lights each vertex with its vertex normal.
     for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
         const auto& t = ref.triangles[k];

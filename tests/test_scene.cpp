@@ -1,5 +1,5 @@
-// Scene files (SPEC §5, §6): parsing, defaults, merging, located diagnostics,
-// and the object transform of SPEC §2.
+// Scene files (docs/spec.md §5, §6): parsing, defaults, merging, located diagnostics,
+// and the object transform of docs/spec.md §2.
 #include "litkit/scene.hpp"
 
 #include <gtest/gtest.h>
@@ -305,14 +305,14 @@ position = [0, 0, -3]
 )"),
                                     "scene.toml");
 
-    // [observer]: only position was given (SPEC §1).
+    // [observer]: only position was given (docs/spec.md §1).
     expect_vec3(scene.observer.look_at, {0, 0, 0});
     expect_vec3(scene.observer.up, {0, 1, 0});
     EXPECT_FLOAT_EQ(scene.observer.fov_degrees, 45.0f);
     EXPECT_FLOAT_EQ(scene.observer.near, 0.05f);
     EXPECT_FLOAT_EQ(scene.observer.far, 1000.0f);
 
-    // No [lighting]: not given, the caller decides (R11). No [output]: SPEC §5.
+    // No [lighting]: not given, the caller decides (R11). No [output]: docs/spec.md §5.
     EXPECT_FALSE(scene.reflection.has_value());
     EXPECT_FALSE(scene.shading.has_value());
     EXPECT_EQ(scene.output.width, 800);
@@ -454,7 +454,7 @@ file = "obj/quad.obj"
 }
 
 // ---------------------------------------------------------------------------
-// Diagnostics: one line each, located at the offending value (SPEC §6)
+// Diagnostics: one line each, located at the offending value (docs/spec.md §6)
 
 TEST(SceneDiagnostics, StringWhereAnArrayBelongsIsLocatedAtTheValue) {
     expect_single_diagnostic(with_required_tables(R"([[lights]]
@@ -713,7 +713,7 @@ colour = [1, 2, 3]
 }
 
 // ---------------------------------------------------------------------------
-// Files: reading, merging (SPEC §5) and unreadable files (R9)
+// Files: reading, merging (docs/spec.md §5) and unreadable files (R9)
 
 TEST_F(SceneFiles, TwoFilesMergeLightsAndObjectsInOrder) {
     const fs::path first = write("a.toml", R"([room]
@@ -911,7 +911,7 @@ TEST(SceneParse, NonAsciiAfterALineEndingBackslashStaysInTheString) {
 }
 
 // ---------------------------------------------------------------------------
-// Placement (SPEC §2)
+// Placement (docs/spec.md §2)
 
 glm::vec3 transform_point(const SceneObject& object, const glm::vec3& point) {
     glm::vec4 result = object_to_world(object) * glm::vec4(point, 1.0f);
@@ -950,7 +950,7 @@ TEST(ObjectToWorld, ScalesThenRotatesThenTranslates) {
 }
 
 // ---------------------------------------------------------------------------
-// The default scene (SPEC §7, R12)
+// The default scene (docs/spec.md §7, R12)
 
 TEST(DefaultScene, HasOneCubeOnePointLightAtTheCentreAndPhong) {
     const Scene scene = default_scene();

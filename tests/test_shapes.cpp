@@ -1,4 +1,4 @@
-// Unit tests for the built-in shapes and OBJ mesh files (SPEC §2). Every
+// Unit tests for the built-in shapes and OBJ mesh files (docs/spec.md §2). Every
 // expected value is worked out by hand in the comment above its check.
 #include <gtest/gtest.h>
 
@@ -127,7 +127,7 @@ TEST(Cube, EveryFaceNormalPointsAwayFromTheCentre) {
 }
 
 TEST(Cube, VertexNormalsPointAlongTheDiagonals) {
-    // SPEC DD9 with the diagonals chosen as in make_cube: each corner lies in
+    // DD9 (docs/spec.md §2) with the diagonals chosen as in make_cube: each corner lies in
     // the same number of triangles on each of its 3 faces, so the mean of the
     // face normals is (±1, ±1, ±1)·k and its direction is (±1, ±1, ±1)/√3,
     // with the signs of the corner's coordinates.

@@ -1,6 +1,6 @@
 // litkit: the command-line tool. Thin by design: it parses arguments, calls
 // the library and decides how results and errors are shown and which exit
-// status they get (SPEC §6: 0 success, 1 a file could not be read or written,
+// status they get (docs/spec.md §6: 0 success, 1 a file could not be read or written,
 // 2 invalid input or usage).
 #include <CLI/CLI.hpp>
 #include <unistd.h>
@@ -84,7 +84,7 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->capture_default_str();
 }
 
-// The renderer chosen with --backend; both draw the picture of SPEC §1-§4.
+// The renderer chosen with --backend; both draw the picture of docs/spec.md §1-§4.
 class Backend {
 public:
     Backend(const litkit::Scene& scene, const SceneArguments& arguments) {
@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("litkit ") + LITKIT_VERSION);
     app.require_subcommand(1);
     // Lets `--version` (and any option of the top level) follow a command:
-    // `litkit render --version` works as SPEC §8 asks.
+    // `litkit render --version` works as docs/spec.md §8 asks.
     app.fallthrough();
 
     RenderArguments render_arguments;

@@ -1,5 +1,5 @@
 // Exact-enough tests between convex hulls of point sets, by GJK
-// (Gilbert–Johnson–Keerthi), for the overlap rules of SPEC §6. Points are
+// (Gilbert–Johnson–Keerthi), for the overlap rules of docs/spec.md §6. Points are
 // used as given: the hull of a mesh is the hull of its vertices.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The one home of the lighting equations (SPEC §4). Every path evaluates
+// The one home of the lighting equations (docs/spec.md §4). Every path evaluates
 // these templates: the scalar `shade` with T = float, the renderer's
 // per-vertex and per-pixel stages, and later SIMD batches and the GLSL
 // generator, each with its own T.
@@ -68,7 +68,7 @@ Vec3<T> normalize(const Vec3<T>& a) {
     return (T(1) / length(a)) * a;
 }
 
-// Material with coefficients of type T (SPEC §4 symbols C, k_a, k_d, k_s, α).
+// Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d, k_s, α).
 template <class T>
 struct MaterialT {
     Vec3<T> color;
@@ -79,7 +79,7 @@ MaterialT<T> splat(const Material& m) {
     return {splat<T>(m.color), T(m.ka), T(m.kd), T(m.ks), T(m.shininess)};
 }
 
-// ---- Light directions and factors (SPEC §4, first table) ----
+// ---- Light directions and factors (docs/spec.md §4, first table) ----
 
 // Where a light comes from at a surface point: L (unit, towards the light)
 // and the factor f.
@@ -120,7 +120,7 @@ T spot_factor(const Vec3<T>& to_light, const Vec3<T>& axis_unit, const T& cos_cu
     return select(c >= cos_cutoff, pow(max(c, T(0)), exponent), T(0));
 }
 
-// ---- Reflection models (SPEC §4, second table; IM1–IM4) ----
+// ---- Reflection models (docs/spec.md §4, second table; IM1–IM4) ----
 
 template <class T>
 struct Terms {
@@ -156,7 +156,7 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
     }
 }
 
-// ---- Colour (SPEC §4, DD3–DD6) ----
+// ---- Colour (docs/spec.md §4, DD3–DD6) ----
 
 // k_a · C · I_L for an ambient light.
 template <class T>
@@ -220,7 +220,7 @@ glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lig
                        const glm::vec3& normal, const glm::vec3& eye);
 
 // I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S) at point p with
-// unit normal N and unit V (SPEC §4). Unclamped.
+// unit normal N and unit V (docs/spec.md §4). Unclamped.
 template <Reflection R, class T>
 Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& material,
                     const Vec3<T>& p, const Vec3<T>& normal, const Vec3<T>& to_eye) {

@@ -1,4 +1,4 @@
-// Whole-or-nothing file output (SPEC §6: a failed run leaves no partial file
+// Whole-or-nothing file output (docs/spec.md §6: a failed run leaves no partial file
 // and the previous file untouched).
 #pragma once
 

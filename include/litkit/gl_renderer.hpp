@@ -1,4 +1,4 @@
-// The OpenGL backend (`litkit render --backend gl`): the picture of SPEC §1–§4
+// The OpenGL backend (`litkit render --backend gl`): the picture of docs/spec.md §1–§4
 // drawn by OpenGL 3.3 core on a headless EGL context (a GPU's driver where
 // there is one, Mesa's llvmpipe otherwise), with shaders from litkit/glsl.hpp.
 // Part of the separate library litkit::gl, so that the core library does not

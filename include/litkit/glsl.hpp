@@ -1,4 +1,4 @@
-// GLSL generated from the lighting equations (SPEC §4): the OpenGL backend's
+// GLSL generated from the lighting equations (docs/spec.md §4): the OpenGL backend's
 // shaders and what `litkit export --format glsl` writes. The function bodies
 // come from instantiating litkit/equations.hpp with a scalar type that prints
 // GLSL instead of computing, so the GPU evaluates the very text the CPU does.
@@ -19,7 +19,7 @@
 //                                   kind: 0 ambient, 1 directional, 2 point, 3 spot;
 //                                   the fields of equations::PreparedLight
 //     float u_inv_gamma             1 / gamma
-//   output: the pixel value of SPEC §4, already rounded to a multiple of 1/255.
+//   output: the pixel value of docs/spec.md §4, already rounded to a multiple of 1/255.
 #pragma once
 
 #include <string>

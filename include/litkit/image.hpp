@@ -8,7 +8,7 @@
 
 namespace litkit {
 
-// Row-major 8-bit RGB, row 0 at the top (SPEC §1).
+// Row-major 8-bit RGB, row 0 at the top (docs/spec.md §1).
 struct Image {
     int width = 0;
     int height = 0;

@@ -1,4 +1,4 @@
-// The lighting-model family of SPEC §3–§4: reflection models, shading models,
+// The lighting-model family of docs/spec.md §3–§4: reflection models, shading models,
 // lights and materials, and `shade`, which evaluates the colour at one
 // surface point. Students and tests call `shade` directly; the renderers
 // evaluate the very same equations (litkit/equations.hpp).
@@ -14,9 +14,9 @@
 
 namespace litkit {
 
-// SPEC §4, IM1–IM4.
+// docs/spec.md §4, IM1–IM4.
 enum class Reflection { Lambert, HalfLambert, Phong, BlinnPhong };
-// SPEC §3, DD8–DD10.
+// docs/spec.md §3, DD8–DD10.
 enum class Shading { Flat, Gouraud, Phong };
 
 // Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong".
@@ -26,7 +26,7 @@ std::string_view to_string(Shading shading);
 std::optional<Reflection> parse_reflection(std::string_view text);
 std::optional<Shading> parse_shading(std::string_view text);
 
-// Surface coefficients. `color` is C of SPEC §4: the material colour / 255,
+// Surface coefficients. `color` is C of docs/spec.md §4: the material colour / 255,
 // per channel in [0, 1].
 struct Material {
     glm::vec3 color{1.0f, 1.0f, 1.0f};
@@ -36,7 +36,7 @@ struct Material {
     float shininess = 32.0f;
 };
 
-// Light kinds: a closed set behind one variant (SPEC §4 table).
+// Light kinds: a closed set behind one variant (docs/spec.md §4 table).
 struct AmbientLight {};
 struct DirectionalLight {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light travels; need not be unit
@@ -59,19 +59,19 @@ struct Light {
     glm::vec3 color{1.0f, 1.0f, 1.0f};  // colour / 255
     float intensity = 1.0f;
 
-    // I_L of SPEC §4: intensity · colour / 255.
+    // I_L of docs/spec.md §4: intensity · colour / 255.
     glm::vec3 radiance() const { return intensity * color; }
 };
 
 // The colour I at surface point `position` with unit normal `normal`, seen
-// from `eye`, before clamping and gamma (SPEC §4):
+// from `eye`, before clamping and gamma (docs/spec.md §4):
 //   I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S).
 // `normal` must be unit length; it is used as given (the shading model
 // decides which normal that is).
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
                 const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye);
 
-// The pixel value of SPEC §4 for one channel: round(255 · clamp(I, 0, 1)^(1/gamma)).
+// The pixel value of docs/spec.md §4 for one channel: round(255 · clamp(I, 0, 1)^(1/gamma)).
 unsigned char to_pixel(float intensity, float gamma);
 
 }  // namespace litkit

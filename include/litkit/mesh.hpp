@@ -1,4 +1,4 @@
-// Triangle meshes (AB4) and their normals (SPEC §2, DD8, DD9).
+// Triangle meshes (AB4) and their normals (docs/spec.md §2, DD8, DD9).
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,4 +1,4 @@
-// The CPU renderer: draws a scene exactly as SPEC §1–§4 define it.
+// The CPU renderer: draws a scene exactly as docs/spec.md §1–§4 define it.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// A scene as SPEC §5 describes it, and its loading from TOML files.
+// A scene as docs/spec.md §5 describes it, and its loading from TOML files.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -21,14 +21,14 @@
 
 namespace litkit {
 
-// The axis-aligned box centred at the origin that bounds the scene (SPEC §1).
+// The axis-aligned box centred at the origin that bounds the scene (docs/spec.md §1).
 struct Room {
     float width = 10.0f;
     float height = 10.0f;
     float depth = 10.0f;
 };
 
-// The single perspective camera (SPEC §1, AB3).
+// The single perspective camera (docs/spec.md §1, AB3).
 struct Observer {
     glm::vec3 position{0.0f, 0.0f, 5.0f};
     glm::vec3 look_at{0.0f};
@@ -115,7 +115,7 @@ struct Scene {
 inline constexpr Reflection default_reflection = Reflection::Phong;
 inline constexpr Shading default_shading = Shading::Phong;
 
-// Reads and merges scene files (SPEC §5): `lights` and `objects` arrays are
+// Reads and merges scene files (docs/spec.md §5): `lights` and `objects` arrays are
 // concatenated in the order given; every other table may appear in one file
 // only. Throws IoError for a file that cannot be read (missing, not UTF-8,
 // not TOML) and SceneError listing every problem found in the input.
@@ -125,12 +125,12 @@ Scene load_scene(std::span<const std::filesystem::path> files);
 // folder resolves relative mesh paths.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);
 
-// The built-in default scene of SPEC §7 (R12): one cube, one point light at
+// The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
 // the centre of the room, Phong shading, Phong reflection.
 std::string_view default_scene_toml();
 Scene default_scene();
 
-// world = T(position) · Rz · Ry · Rx · S(scale) (SPEC §2).
+// world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
 glm::mat4 object_to_world(const SceneObject& object);
 
 // The object's mesh in local coordinates (builds the shape or reads the file).
@@ -138,7 +138,7 @@ Mesh object_mesh(const SceneObject& object);
 
 // An object's triangles in world space, as every backend draws them:
 // positions placed by object_to_world, and DD9 vertex normals (found in local
-// coordinates, where SPEC §2 welds positions, then rotated: the scale is
+// coordinates, where docs/spec.md §2 welds positions, then rotated: the scale is
 // uniform and positive, so that is the same direction).
 struct WorldMesh {
     std::vector<glm::vec3> positions;

@@ -1,4 +1,4 @@
-// The value and geometry rules of SPEC §6 (R2, R8), checked on a loaded
+// The value and geometry rules of docs/spec.md §6 (R2, R8), checked on a loaded
 // scene before anything renders. The loader (scene.hpp) checks the shape of
 // the input (types, keys, spelling); this checks what the values mean.
 #pragma once

@@ -13,7 +13,7 @@ GlObject gl_object(const SceneObject& object, Reflection reflection, Shading sha
     gl.shading = shading;
     auto put = [&gl](const glm::vec3& v) { gl.vertices.insert(gl.vertices.end(), {v.x, v.y, v.z}); };
     if (shading == Shading::Flat) {
-        // SPEC §3 flat: every corner carries the triangle's DD8 normal and
+        // docs/spec.md §3 flat: every corner carries the triangle's DD8 normal and
         // centroid, so the colour is the same whichever corner OpenGL uses.
         gl.vertices.reserve(mesh.triangles.size() * 27);
         for (const auto& t : mesh.triangles) {

@@ -324,7 +324,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         raster.object = chunk.object;
         raster.source = source;
         if (object.shading == Shading::Flat && !flat_done) {
-            // SPEC §3 flat: lit once, at the centroid of the whole (unclipped)
+            // docs/spec.md §3 flat: lit once, at the centroid of the whole (unclipped)
             // triangle, with its face normal.
             const auto& v = object.triangles[source];
             const glm::vec3 centroid =

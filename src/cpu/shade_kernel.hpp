@@ -33,11 +33,11 @@ struct ColorRun {
 
 struct Kernels {
     const char* name;
-    // SPEC §3 Phong shading: renormalise the normal, light per pixel.
+    // docs/spec.md §3 Phong shading: renormalise the normal, light per pixel.
     void (*shade_phong)(Reflection reflection, std::span<const equations::PreparedLight> lights,
                         const Material& material, const float eye[3], const SurfaceRun& surface,
                         const ColorRun& out);
-    // SPEC §4 pixel values: round(255 · clamp(I, 0, 1)^(1/gamma)) per channel,
+    // docs/spec.md §4 pixel values: round(255 · clamp(I, 0, 1)^(1/gamma)) per channel,
     // written as interleaved RGB bytes.
     void (*encode)(const float* r, const float* g, const float* b, std::size_t count, float gamma,
                    std::uint8_t* rgb);

@@ -20,7 +20,7 @@ namespace litkit {
 
 namespace {
 
-// SPEC §2, DD9: positions within this fraction of the bounding-box diagonal
+// docs/spec.md §2, DD9: positions within this fraction of the bounding-box diagonal
 // are one vertex.
 constexpr double weld_fraction_of_diagonal = 1e-6;
 
@@ -279,7 +279,7 @@ class WeldGrid {
 };
 
 // For each position, the index of the first position of its welded vertex
-// (SPEC §2, DD9). Non-finite positions weld with nothing.
+// (docs/spec.md §2, DD9). Non-finite positions weld with nothing.
 std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
     glm::dvec3 lowest(std::numeric_limits<double>::infinity());
     glm::dvec3 highest(-std::numeric_limits<double>::infinity());

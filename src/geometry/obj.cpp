@@ -1,4 +1,4 @@
-// Wavefront OBJ mesh files (SPEC §2, `type = "mesh"`), read with tinyobjloader.
+// Wavefront OBJ mesh files (docs/spec.md §2, `type = "mesh"`), read with tinyobjloader.
 #include <tiny_obj_loader.h>
 
 #include <cctype>
@@ -75,7 +75,7 @@ Mesh load_obj(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw IoError(name, errno != 0 ? std::strerror(errno) : "cannot open the file");
 
-    // Without tinyobjloader's triangulation: SPEC §2 fixes the fan
+    // Without tinyobjloader's triangulation: docs/spec.md §2 fixes the fan
     // (v0, vi, vi+1), made below. No material reader: materials play no part,
     // and a mesh file must not make us open other files.
     tinyobj::attrib_t attributes;
@@ -130,7 +130,7 @@ Mesh load_obj(const std::filesystem::path& path) {
                 }
                 corners.push_back(static_cast<std::uint32_t>(vertex));
             }
-            // SPEC §2: the polygon (v0, v1, …, vk) becomes the fan (v0, vi, vi+1).
+            // docs/spec.md §2: the polygon (v0, v1, …, vk) becomes the fan (v0, vi, vi+1).
             for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
                 mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
             }

@@ -1,5 +1,5 @@
-// Built-in shapes (SPEC §2). Scene validation checks the parameters first
-// (SPEC §6); the checks here are a guard for callers of the library.
+// Built-in shapes (docs/spec.md §2). Scene validation checks the parameters first
+// (docs/spec.md §6); the checks here are a guard for callers of the library.
 #include "litkit/shapes.hpp"
 
 #include <array>
@@ -155,7 +155,7 @@ Mesh make_torus(float major_radius, float minor_radius, int segments, int sides)
     require_at_least("make_torus", "segments", segments, 3);
     require_at_least("make_torus", "sides", sides, 3);
     if (!(minor_radius < major_radius)) {
-        // SPEC §6: a thicker tube would pass through the axis and the surface
+        // docs/spec.md §6: a thicker tube would pass through the axis and the surface
         // would cross itself.
         throw std::invalid_argument("make_torus: minor_radius (" + std::to_string(minor_radius) +
                                     ") must be below major_radius (" +

@@ -1,4 +1,4 @@
-// The Utah teapot (SPEC §2): Martin Newell's 32 bicubic Bézier patches,
+// The Utah teapot (docs/spec.md §2): Martin Newell's 32 bicubic Bézier patches,
 // tessellated into triangles.
 #include <array>
 #include <cmath>
@@ -180,7 +180,7 @@ constexpr std::array<std::array<std::uint16_t, 16>, 32> patches{{
 
 constexpr int patch_order = 4;  // bicubic: 4 control points along each edge
 
-// Our axes are +y up (SPEC §1): (x, y, z)_ours = (x, z, −y)_Newell, a
+// Our axes are +y up (docs/spec.md §1): (x, y, z)_ours = (x, z, −y)_Newell, a
 // rotation about x, so handedness and the winding of every triangle are kept.
 glm::dvec3 to_our_axes(const OriginalPoint& point) { return {point.x, point.z, -point.y}; }
 

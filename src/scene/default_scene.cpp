@@ -1,4 +1,4 @@
-// The built-in default scene of SPEC §7 (R12), as the text `litkit init`
+// The built-in default scene of docs/spec.md §7 (R12), as the text `litkit init`
 // writes.
 #include "litkit/scene.hpp"
 

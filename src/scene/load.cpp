@@ -1,5 +1,5 @@
-// Scene files (SPEC §5): reading them, parsing TOML, merging several files
-// into one Scene, and validating it (SPEC §6). Problems are collected, never
+// Scene files (docs/spec.md §5): reading them, parsing TOML, merging several files
+// into one Scene, and validating it (docs/spec.md §6). Problems are collected, never
 // thrown one at a time, so that a run reports all of them.
 #include <cerrno>
 #include <cstdio>
@@ -18,7 +18,7 @@ using detail::ParsedFile;
 using detail::SceneReader;
 
 // Parses TOML text; a syntax error or invalid UTF-8 makes the file one that
-// cannot be read (SPEC §6), located where parsing stopped.
+// cannot be read (docs/spec.md §6), located where parsing stopped.
 toml::table parse_toml(std::string_view text, const std::string& name) {
     try {
         return toml::parse(text, std::string_view(name));

@@ -61,7 +61,7 @@ glm::vec3 unit_color(const Rgb8& color) {
 }  // namespace
 
 // A top-level table other than `lights` and `objects` may appear in one file
-// only (SPEC §5). Returns false when another file already has it.
+// only (docs/spec.md §5). Returns false when another file already has it.
 bool SceneReader::claim_table(const Site& root, std::string_view key, const toml::node& node) {
     FileLoc here = location(node.source());
     auto [existing, inserted] = defined_tables_.try_emplace(std::string(key), here);
@@ -297,7 +297,7 @@ void SceneReader::read_object(const Site& site) {
             if (file->empty()) {
                 error(site.table.get("file")->source(), site, "file must not be empty");
             } else {
-                // SPEC §5: relative to the file that names it.
+                // docs/spec.md §5: relative to the file that names it.
                 fs::path path(*file);
                 mesh.file = path.is_absolute() ? path : file_->folder / path;
             }

@@ -168,7 +168,7 @@ std::optional<glm::vec3> SceneReader::read_vec3(const Site& site, std::string_vi
     return valid ? std::optional(result) : std::nullopt;
 }
 
-// SPEC §5: [r, g, b] integers 0–255 or "#rrggbb". The range is part of the
+// docs/spec.md §5: [r, g, b] integers 0–255 or "#rrggbb". The range is part of the
 // format here (a background is stored in bytes), so it is checked now.
 std::optional<Rgb8> SceneReader::read_color(const Site& site, std::string_view key) {
     const toml::node* node = lookup(site, key);
@@ -223,7 +223,7 @@ std::optional<std::string> SceneReader::read_string(const Site& site, std::strin
     return std::nullopt;
 }
 
-// A value from a closed set of lower-case words (SPEC §6: `"Phong"` and
+// A value from a closed set of lower-case words (docs/spec.md §6: `"Phong"` and
 // `"blinn"` are errors, with a suggestion).
 std::optional<std::string_view> SceneReader::read_choice(const Site& site, std::string_view key,
                                                          std::span<const std::string_view> choices,

@@ -1,6 +1,6 @@
-// The scene reader (SPEC §5): turns the TOML tables of one or more files into
+// The scene reader (docs/spec.md §5): turns the TOML tables of one or more files into
 // a Scene. Problems in the input are collected, never thrown one
-// at a time, so that a run reports all of them (SPEC §6).
+// at a time, so that a run reports all of them (docs/spec.md §6).
 //
 // What this file checks: the shape of the input — types (a string where a
 // number belongs, a float where an integer belongs), missing required keys,
@@ -10,7 +10,7 @@
 // check: ranges and geometry (room sizes > 0, inside-the-room, overlaps, …);
 // validate_scene (validate.hpp) does, from build_scene, on a well-formed scene.
 //
-// Required tables and keys (a decision SPEC §5 leaves open):
+// Required tables and keys (a decision docs/spec.md §5 leaves open):
 //   [room] with width, height, depth   — required: the room bounds the scene
 //                                        (Table 1 of the requirements);
 //   [observer] with position           — required: exactly one observer (AB3);
@@ -44,7 +44,7 @@
 
 namespace litkit::detail {
 
-// A light or object type and the keys only it has (SPEC §2 and §4 tables).
+// A light or object type and the keys only it has (docs/spec.md §2 and §4 tables).
 struct TypeKeys {
     std::string_view type;
     std::vector<std::string_view> keys;

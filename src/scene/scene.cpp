@@ -1,4 +1,4 @@
-// A Scene's objects placed in the world (SPEC §2): their transforms, meshes and
+// A Scene's objects placed in the world (docs/spec.md §2): their transforms, meshes and
 // world-space vertices and normals, as every backend draws them.
 #include "litkit/scene.hpp"
 
@@ -27,7 +27,7 @@ FileLoc Scene::location_of(std::string_view path) const {
 }
 
 glm::mat4 object_to_world(const SceneObject& object) {
-    // SPEC §2: world = T(position) · Rz · Ry · Rx · S(scale); each glm call
+    // docs/spec.md §2: world = T(position) · Rz · Ry · Rx · S(scale); each glm call
     // multiplies on the right, so the calls read in the formula's order.
     glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
     transform = glm::rotate(transform, glm::radians(object.rotation_degrees.z), {0.0f, 0.0f, 1.0f});

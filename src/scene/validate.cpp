@@ -1,4 +1,4 @@
-// SPEC §6: ranges, then geometry (inside the room, overlaps, lights inside
+// docs/spec.md §6: ranges, then geometry (inside the room, overlaps, lights inside
 // objects, the observer), then warnings. Each rule reports every offender,
 // located at the offending value.
 #include "litkit/validate.hpp"
