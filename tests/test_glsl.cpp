@@ -49,8 +49,11 @@ using litkit::glsl::Hint;
 using litkit::glsl::Output;
 using litkit::glsl::to_glsl;
 
-constexpr Reflection all_reflections[] = {Reflection::Lambert, Reflection::HalfLambert,
-                                          Reflection::Phong, Reflection::BlinnPhong};
+constexpr Reflection all_reflections[] = {
+    Reflection::Lambert,    Reflection::HalfLambert, Reflection::Phong,
+    Reflection::BlinnPhong, Reflection::OrenNayar,   Reflection::CookTorrance,
+    Reflection::Toon,       Reflection::Minnaert,    Reflection::Gooch};
+static_assert(std::size(all_reflections) == litkit::reflection_count);
 constexpr Shading all_shadings[] = {Shading::Flat, Shading::Gouraud, Shading::Phong};
 
 Expr var(const char* name) { return Expr::variable(name); }
@@ -208,13 +211,20 @@ TEST(GlslFunctions, DirectionalIncidenceText) {
 
 TEST(GlslFunctions, SpotFactorText) {
     // T c = -dot(to_light, axis_unit);
-    // return select(c >= cos_cutoff, pow(max(c, T(0)), exponent), T(0));
+    // T width = cos_inner - cos_cutoff;
+    // T t = (c - cos_cutoff) / select(width > T(0), width, T(1));
+    // T w = select(c >= cos_inner, T(1), t * t * (T(3) - T(2) * t));
+    // return select(c >= cos_cutoff, pow(max(c, T(0)), exponent) * w, T(0));
     const std::string text = printed(litkit::glsl::spot_factor_function());
     const std::string body =
-        "float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float exponent) {\n"
+        "float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float cos_inner, "
+        "float exponent) {\n"
         "    float c = -(to_light.x * axis_unit.x + to_light.y * axis_unit.y + to_light.z * "
         "axis_unit.z);\n"
-        "    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) : 0.0);\n"
+        "    float t0 = cos_inner - cos_cutoff;\n"
+        "    float t1 = (c - cos_cutoff) / (t0 > 0.0 ? t0 : 1.0);\n"
+        "    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) * (c >= cos_inner ? 1.0 : "
+        "t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);\n"
         "}\n";
     ASSERT_GE(text.size(), body.size());
     EXPECT_EQ(text.substr(text.size() - body.size()), body);
@@ -255,20 +265,20 @@ TEST(GlslFunctions, AmbientAndDirectTermText) {
                         "    result.z = material.ka * (material.color.z * radiance.z);\n"
                         "    return result;\n"),
               std::string::npos);
-    // diffuse = kd * D; specular = ks * S; factor * (radiance * (diffuse * C + specular)).
+    // specular = ks * S; factor * (radiance * (diffuse colour + specular)).
     EXPECT_NE(printed(litkit::glsl::direct_term_function())
-                  .find("    float diffuse = material.kd * terms.diffuse;\n"
-                        "    float specular = material.ks * terms.specular;\n"
+                  .find("    float specular = material.ks * reflected.specular;\n"
                         "    vec3 result;\n"
-                        "    result.x = factor * (radiance.x * (diffuse * material.color.x + "
-                        "specular));\n"),
+                        "    result.x = factor * (radiance.x * (reflected.diffuse * "
+                        "reflected.color.x + specular));\n"),
               std::string::npos);
 }
 
 TEST(GlslFunctions, PhongReflectionTermsOperations) {
     const std::string text = printed(litkit::glsl::reflection_terms_function(Reflection::Phong));
     for (const char* expected : {
-             "Terms reflection_terms(vec3 normal, vec3 to_light, vec3 to_eye, float shininess) {\n",
+             "Reflected reflect_light(vec3 normal, vec3 to_light, vec3 to_eye, Material material) "
+             "{\n",
              "    float n_dot_l = normal.x * to_light.x + normal.y * to_light.y + normal.z * "
              "to_light.z;\n",
              "    float two_n_dot_l = 2.0 * n_dot_l;\n",
@@ -276,9 +286,10 @@ TEST(GlslFunctions, PhongReflectionTermsOperations) {
              "    float reflected_z = two_n_dot_l * normal.z - to_light.z;\n",
              "    float r_dot_v = reflected_x * to_eye.x + reflected_y * to_eye.y + reflected_z * "
              "to_eye.z;\n",
-             "    result.diffuse = max(n_dot_l, 0.0);\n",
+             "    result.diffuse = material.kd * max(n_dot_l, 0.0);\n",
+             "    result.color.x = material.color.x;\n",
              "    result.specular = (n_dot_l > 0.0 ? (r_dot_v > 0.0 ? power(max(r_dot_v, 0.0), "
-             "shininess) : 0.0) : 0.0);\n",
+             "material.shininess) : 0.0) : 0.0);\n",
          }) {
         EXPECT_NE(text.find(expected), std::string::npos) << "missing: " << expected << "in\n"
                                                           << text;
@@ -295,7 +306,7 @@ TEST(GlslFunctions, BlinnPhongReflectionTermsOperations) {
              "    float n_dot_h = normal.x * halfway_x + normal.y * halfway_y + normal.z * "
              "halfway_z;\n",
              "    result.specular = (n_dot_l > 0.0 ? (n_dot_h > 0.0 ? power(max(n_dot_h, 0.0), "
-             "shininess) : 0.0) : 0.0);\n",
+             "material.shininess) : 0.0) : 0.0);\n",
          }) {
         EXPECT_NE(text.find(expected), std::string::npos) << "missing: " << expected << "in\n"
                                                           << text;
@@ -308,7 +319,7 @@ TEST(GlslFunctions, BlinnPhongReflectionTermsOperations) {
 // calls max, pow, power, sqrt, each evaluated in float as the CPU path does.
 
 class GlslInterpreter {
-public:
+  public:
     // The values of the outputs ("result.to_light.x", or "" for `return`)
     // of the function printed in `source`, with parameters bound as given.
     static std::map<std::string, float> run(const std::string& source, const Bindings& bindings) {
@@ -328,7 +339,7 @@ public:
         return outputs;
     }
 
-private:
+  private:
     explicit GlslInterpreter(const Bindings& bindings) : bindings_(bindings) {}
 
     // One line of a printed body: `float|bool NAME = EXPR;`, `TYPE result;`,
@@ -453,6 +464,8 @@ private:
             if ((name == "pow" || name == "power") && args.size() == 2)
                 return std::pow(args[0], args[1]);
             if (name == "sqrt" && args.size() == 1) return std::sqrt(args[0]);
+            if (name == "min" && args.size() == 2) return args[0] < args[1] ? args[0] : args[1];
+            if (name == "floor" && args.size() == 1) return std::floor(args[0]);
             throw std::runtime_error("interpreter: unknown function " + name);
         }
         if (auto local = locals_.find(name); local != locals_.end()) return local->second;
@@ -495,6 +508,11 @@ void set_input(Bindings& bindings, const std::string& name,
     bindings[name + ".kd"] = material.kd;
     bindings[name + ".ks"] = material.ks;
     bindings[name + ".shininess"] = material.shininess;
+    bindings[name + ".sigma"] = material.sigma;
+    bindings[name + ".roughness"] = material.roughness;
+    bindings[name + ".f0"] = material.f0;
+    bindings[name + ".bands"] = material.bands;
+    bindings[name + ".minnaert_k"] = material.minnaert_k;
 }
 
 std::string describe(const Bindings& bindings) {
@@ -521,7 +539,7 @@ void expect_values(const Function& function, const Bindings& bindings,
 }
 
 class Inputs {
-public:
+  public:
     float uniform(float lo, float hi) {
         return std::uniform_real_distribution<float>(lo, hi)(random_);
     }
@@ -538,7 +556,7 @@ public:
     // Exactly 0 a quarter of the time, else as given.
     float sometimes_zero(float value) { return uniform(0.0f, 1.0f) < 0.25f ? 0.0f : value; }
 
-private:
+  private:
     std::mt19937 random_{20240611};
 };
 
@@ -583,17 +601,32 @@ TEST(GlslNumeric, PointIncidence) {
 TEST(GlslNumeric, SpotFactor) {
     const Function function = litkit::glsl::spot_factor_function();
     Inputs inputs;
-    auto check = [&](const Vec3<float>& to_light, const Vec3<float>& axis, float cos_cutoff,
-                     float exponent) {
-        const float expected = litkit::equations::spot_factor(to_light, axis, cos_cutoff, exponent);
+    // cos_inner = cos_cutoff: a spot without penumbra (docs/spec.md §4);
+    // check_soft passes another inner cone (§9.3).
+    auto check_soft = [&](const Vec3<float>& to_light, const Vec3<float>& axis, float cos_cutoff,
+                          float cos_inner, float exponent) {
+        const float expected =
+            litkit::equations::spot_factor(to_light, axis, cos_cutoff, cos_inner, exponent);
         Bindings bindings;
         set_input(bindings, "to_light", to_light);
         set_input(bindings, "axis_unit", axis);
         bindings["cos_cutoff"] = cos_cutoff;
+        bindings["cos_inner"] = cos_inner;
         bindings["exponent"] = exponent;
         expect_values(function, bindings, {expected});
         return expected;
     };
+    auto check = [&](const Vec3<float>& to_light, const Vec3<float>& axis, float cos_cutoff,
+                     float exponent) {
+        return check_soft(to_light, axis, cos_cutoff, cos_cutoff, exponent);
+    };
+    for (int i = 0; i < random_cases; ++i) {
+        const Vec3<float> to_light = inputs.unit();
+        const Vec3<float> axis = inputs.unit();
+        const float cos_cutoff = inputs.uniform(-1.0f, 1.0f);
+        check_soft(to_light, axis, cos_cutoff, inputs.uniform(cos_cutoff, 1.0f),
+                   inputs.sometimes_zero(inputs.uniform(0.0f, 64.0f)));
+    }
     for (int i = 0; i < random_cases; ++i) {
         const Vec3<float> to_light = inputs.unit();
         const Vec3<float> axis = inputs.unit();
@@ -622,16 +655,31 @@ TEST_P(GlslNumericReflection, ReflectionTerms) {
     Inputs inputs;
     auto check = [&](const Vec3<float>& normal, const Vec3<float>& to_light,
                      const Vec3<float>& to_eye, float shininess) {
-        const auto terms = litkit::equations::with_reflection(reflection, [&](auto model) {
-            return litkit::equations::reflection_terms<decltype(model)::value>(normal, to_light,
-                                                                               to_eye, shininess);
+        // The other parameters at random within their ranges (docs/spec.md §9.1),
+        // sometimes at an end.
+        litkit::Material source;
+        source.color = {inputs.uniform(0, 1), inputs.uniform(0, 1), inputs.uniform(0, 1)};
+        source.kd = inputs.uniform(0, 1);
+        source.shininess = shininess;
+        source.sigma_degrees = inputs.sometimes_zero(inputs.uniform(0, 90));
+        source.roughness = inputs.sometimes_zero(inputs.uniform(0, 1));
+        source.f0 = inputs.uniform(0, 1);
+        source.bands = 2 + static_cast<int>(inputs.uniform(0, 14.99f));
+        source.minnaert_k = inputs.sometimes_zero(inputs.uniform(0, 4));
+        const auto material = litkit::equations::splat<float>(source);
+        const auto reflected = litkit::equations::with_reflection(reflection, [&](auto model) {
+            return litkit::equations::reflect<decltype(model)::value>(normal, to_light, to_eye,
+                                                                      material);
         });
         Bindings bindings;
         set_input(bindings, "normal", normal);
         set_input(bindings, "to_light", to_light);
         set_input(bindings, "to_eye", to_eye);
-        bindings["shininess"] = shininess;
-        expect_values(function, bindings, {terms.diffuse, terms.specular});
+        set_input(bindings, "material", material);
+        expect_values(
+            function, bindings,
+            {reflected.diffuse, reflected.color.x, reflected.color.y, reflected.color.z,
+             reflected.specular});
     };
     const float shininesses[] = {0.0f, 1.0f, 32.0f, 0.5f};
     for (int i = 0; i < random_cases; ++i) {
@@ -666,14 +714,17 @@ TEST(GlslNumeric, AmbientAndDirectTerms) {
     for (int i = 0; i < random_cases; ++i) {
         const Vec3<float> radiance{inputs.uniform(0, 3), inputs.uniform(0, 3),
                                    inputs.uniform(0, 3)};
-        const litkit::equations::MaterialT<float> material{
+        litkit::Material source;
+        source.color = {inputs.uniform(0, 1), inputs.uniform(0, 1), inputs.uniform(0, 1)};
+        source.ka = inputs.uniform(0, 1);
+        source.kd = inputs.uniform(0, 1);
+        source.ks = inputs.uniform(0, 1);
+        source.shininess = inputs.uniform(0, 100);
+        const auto material = litkit::equations::splat<float>(source);
+        const litkit::equations::Reflected<float> reflected{
+            inputs.sometimes_zero(inputs.uniform(0, 1)),
             {inputs.uniform(0, 1), inputs.uniform(0, 1), inputs.uniform(0, 1)},
-            inputs.uniform(0, 1),
-            inputs.uniform(0, 1),
-            inputs.uniform(0, 1),
-            inputs.uniform(0, 100)};
-        const litkit::equations::Terms<float> terms{inputs.sometimes_zero(inputs.uniform(0, 1)),
-                                                    inputs.sometimes_zero(inputs.uniform(0, 1))};
+            inputs.sometimes_zero(inputs.uniform(0, 1))};
         const float factor = inputs.uniform(0, 2);
         Bindings bindings;
         set_input(bindings, "radiance", radiance);
@@ -681,9 +732,10 @@ TEST(GlslNumeric, AmbientAndDirectTerms) {
         const auto a = litkit::equations::ambient_term(radiance, material);
         expect_values(ambient, bindings, {a.x, a.y, a.z});
         bindings["factor"] = factor;
-        bindings["terms.diffuse"] = terms.diffuse;
-        bindings["terms.specular"] = terms.specular;
-        const auto d = litkit::equations::direct_term(radiance, factor, terms, material);
+        bindings["reflected.diffuse"] = reflected.diffuse;
+        set_input(bindings, "reflected.color", reflected.color);
+        bindings["reflected.specular"] = reflected.specular;
+        const auto d = litkit::equations::direct_term(radiance, factor, reflected, material);
         expect_values(direct, bindings, {d.x, d.y, d.z});
     }
 }
@@ -714,12 +766,12 @@ TEST(GlslGenerate, EachReflectionModelHasItsOwnTerms) {
     std::set<std::string> fragments;
     for (Reflection reflection : all_reflections)
         fragments.insert(litkit::glsl::generate(reflection, Shading::Phong, 4).fragment);
-    EXPECT_EQ(fragments.size(), 4u);
+    EXPECT_EQ(fragments.size(), std::size(all_reflections));
 }
 
 // A fresh temporary directory, removed at the end of the test.
 class TemporaryDirectory {
-public:
+  public:
     TemporaryDirectory() {
         std::string pattern =
             (std::filesystem::temp_directory_path() / "litkit-glsl-XXXXXX").string();
@@ -734,7 +786,7 @@ public:
     TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
     const std::filesystem::path& path() const { return path_; }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 
@@ -839,7 +891,7 @@ TEST_P(GlslProgram, FollowsTheInterface) {
     const std::string& lit = shading == Shading::Phong ? shaders.fragment : shaders.vertex;
     const std::string& unlit = shading == Shading::Phong ? shaders.vertex : shaders.fragment;
     for (const char* declaration :
-         {"Terms reflection_terms(", "vec3 shade(vec3 p, vec3 normal, vec3 to_eye)",
+         {"Reflected reflect_light(", "vec3 shade(vec3 p, vec3 normal, vec3 to_eye)",
           "uniform Light u_lights[MAX_LIGHTS];", "uniform Material u_material;"}) {
         EXPECT_NE(lit.find(declaration), std::string::npos) << declaration;
         EXPECT_EQ(unlit.find(declaration), std::string::npos) << declaration;

@@ -36,6 +36,13 @@ const glm::vec3 up{0.0f, 1.0f, 0.0f};
 const glm::vec3 white{1.0f, 1.0f, 1.0f};
 const float sqrt3 = std::sqrt(3.0f);
 
+// A material whose shininess is α and whose other values are the defaults.
+litkit::equations::MaterialT<float> with_shininess(float shininess) {
+    Material material;
+    material.shininess = shininess;
+    return litkit::equations::splat<float>(material);
+}
+
 constexpr std::array<Reflection, 4> all_reflections{Reflection::Lambert, Reflection::HalfLambert,
                                                     Reflection::Phong, Reflection::BlinnPhong};
 
@@ -763,31 +770,32 @@ TEST(SpotFactor, InsideConeRaisesCosineToExponent) {
     using litkit::equations::Vec3;
     const Vec3<float> axis{0.0f, -1.0f, 0.0f};
     // L = (0,1,0): c = 1 ⇒ 1^2 = 1.
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0, 1, 0}, axis, 0.5f, 2.0f), 1.0f,
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0, 1, 0}, axis, 0.5f, 0.5f, 2.0f), 1.0f,
                 tolerance);
     // L = (0.6, 0.8, 0) (unit): c = 0.8 ≥ 0.5 ⇒ 0.8³ = 0.512; exponent 0 ⇒ 1.
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.5f, 3.0f),
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.5f, 0.5f, 3.0f),
                 0.512f, tolerance);
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.5f, 0.0f), 1.0f,
-                tolerance);
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.5f, 0.5f, 0.0f),
+                1.0f, tolerance);
 }
 
 TEST(SpotFactor, BoundaryIsInclusive) {
     using litkit::equations::Vec3;
     const Vec3<float> axis{0.0f, -1.0f, 0.0f};
     // c = 0.8 and cos(cutoff) = 0.8: c ≥ cos(cutoff) ⇒ s = 0.8² = 0.64.
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.8f, 2.0f), 0.64f,
-                tolerance);
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.8f, 0.8f, 2.0f),
+                0.64f, tolerance);
 }
 
 TEST(SpotFactor, OutsideConeIsZero) {
     using litkit::equations::Vec3;
     const Vec3<float> axis{0.0f, -1.0f, 0.0f};
     // c = 0.8 < cos(cutoff) = 0.81 ⇒ 0, whatever the exponent.
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.81f, 0.0f), 0.0f,
-                tolerance);
+    EXPECT_NEAR(
+        litkit::equations::spot_factor(Vec3<float>{0.6f, 0.8f, 0}, axis, 0.81f, 0.81f, 0.0f), 0.0f,
+        tolerance);
     // L = (0,-1,0): c = -1 < cos 90° = 0 ⇒ 0.
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0, -1, 0}, axis, 0.0f, 0.0f), 0.0f,
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{0, -1, 0}, axis, 0.0f, 0.0f, 0.0f), 0.0f,
                 tolerance);
 }
 
@@ -795,9 +803,9 @@ TEST(SpotFactor, ZeroToTheZeroIsOneAtNinetyDegrees) {
     using litkit::equations::Vec3;
     // L = (1,0,0) ⊥ axis: c = 0 ≥ cos 90° = 0 ⇒ 0^0 = 1; with exponent 1 ⇒ 0.
     const Vec3<float> axis{0.0f, -1.0f, 0.0f};
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{1, 0, 0}, axis, 0.0f, 0.0f), 1.0f,
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{1, 0, 0}, axis, 0.0f, 0.0f, 0.0f), 1.0f,
                 tolerance);
-    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{1, 0, 0}, axis, 0.0f, 1.0f), 0.0f,
+    EXPECT_NEAR(litkit::equations::spot_factor(Vec3<float>{1, 0, 0}, axis, 0.0f, 0.0f, 1.0f), 0.0f,
                 tolerance);
 }
 
@@ -830,16 +838,20 @@ TEST(ReflectionTerms, EachModelAtSixtyDegreeLightAndEyeAlongNormal) {
     const Vec3<float> normal{0, 1, 0};
     const Vec3<float> to_light{sqrt3 / 2, 0.5f, 0};
     const Vec3<float> to_eye{0, 1, 0};
-    Terms<float> lambert = reflection_terms<Reflection::Lambert>(normal, to_light, to_eye, 2.0f);
+    Terms<float> lambert =
+        reflection_terms<Reflection::Lambert>(normal, to_light, to_eye, with_shininess(2.0f));
     EXPECT_NEAR(lambert.diffuse, 0.5f, tolerance);
     EXPECT_NEAR(lambert.specular, 0.0f, tolerance);
-    Terms<float> half = reflection_terms<Reflection::HalfLambert>(normal, to_light, to_eye, 2.0f);
+    Terms<float> half =
+        reflection_terms<Reflection::HalfLambert>(normal, to_light, to_eye, with_shininess(2.0f));
     EXPECT_NEAR(half.diffuse, 0.5625f, tolerance);
     EXPECT_NEAR(half.specular, 0.0f, tolerance);
-    Terms<float> phong = reflection_terms<Reflection::Phong>(normal, to_light, to_eye, 2.0f);
+    Terms<float> phong =
+        reflection_terms<Reflection::Phong>(normal, to_light, to_eye, with_shininess(2.0f));
     EXPECT_NEAR(phong.diffuse, 0.5f, tolerance);
     EXPECT_NEAR(phong.specular, 0.25f, tolerance);
-    Terms<float> blinn = reflection_terms<Reflection::BlinnPhong>(normal, to_light, to_eye, 2.0f);
+    Terms<float> blinn =
+        reflection_terms<Reflection::BlinnPhong>(normal, to_light, to_eye, with_shininess(2.0f));
     EXPECT_NEAR(blinn.diffuse, 0.5f, tolerance);
     EXPECT_NEAR(blinn.specular, 0.75f, tolerance);
 }
@@ -854,15 +866,19 @@ TEST(ReflectionTerms, BackFaceGivesZeroExceptHalfLambertWrap) {
     const Vec3<float> normal{0, 1, 0};
     const Vec3<float> to_light{sqrt3 / 2, -0.5f, 0};
     const Vec3<float> to_eye{0, -1, 0};
-    Terms<float> lambert = reflection_terms<Reflection::Lambert>(normal, to_light, to_eye, 0.0f);
+    Terms<float> lambert =
+        reflection_terms<Reflection::Lambert>(normal, to_light, to_eye, with_shininess(0.0f));
     EXPECT_NEAR(lambert.diffuse, 0.0f, tolerance);
-    Terms<float> half = reflection_terms<Reflection::HalfLambert>(normal, to_light, to_eye, 0.0f);
+    Terms<float> half =
+        reflection_terms<Reflection::HalfLambert>(normal, to_light, to_eye, with_shininess(0.0f));
     EXPECT_NEAR(half.diffuse, 0.0625f, tolerance);
     EXPECT_NEAR(half.specular, 0.0f, tolerance);
-    Terms<float> phong = reflection_terms<Reflection::Phong>(normal, to_light, to_eye, 0.0f);
+    Terms<float> phong =
+        reflection_terms<Reflection::Phong>(normal, to_light, to_eye, with_shininess(0.0f));
     EXPECT_NEAR(phong.diffuse, 0.0f, tolerance);
     EXPECT_NEAR(phong.specular, 0.0f, tolerance);
-    Terms<float> blinn = reflection_terms<Reflection::BlinnPhong>(normal, to_light, to_eye, 0.0f);
+    Terms<float> blinn =
+        reflection_terms<Reflection::BlinnPhong>(normal, to_light, to_eye, with_shininess(0.0f));
     EXPECT_NEAR(blinn.diffuse, 0.0f, tolerance);
     EXPECT_NEAR(blinn.specular, 0.0f, tolerance);
 }

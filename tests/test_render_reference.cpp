@@ -164,6 +164,7 @@ struct RefLight {
     dvec3 travel{0.0};  // directional: unit travel direction; spot: unit axis
     dvec3 attenuation{0.0};
     double cos_cutoff = 0.0;
+    double cos_inner = 0.0;  // docs/spec.md §9.3
     double exponent = 0.0;
 };
 
@@ -188,6 +189,8 @@ RefLight to_reference(const litkit::Light& light) {
                 result.attenuation = to_double(kind.attenuation);
                 result.travel = glm::normalize(to_double(kind.direction));
                 result.cos_cutoff = std::cos(double(kind.cutoff_degrees) * pi / 180.0);
+                result.cos_inner = std::cos(double(kind.cutoff_degrees) *
+                                            (1.0 - double(kind.penumbra)) * pi / 180.0);
                 result.exponent = double(kind.exponent);
             }
         },
@@ -198,11 +201,14 @@ RefLight to_reference(const litkit::Light& light) {
 struct RefMaterial {
     dvec3 color;  // C
     double ka, kd, ks, shininess;
+    double sigma_degrees, roughness, f0, bands, minnaert_k;  // docs/spec.md §9.1
 };
 
 RefMaterial to_reference(const litkit::Material& material) {
-    return {to_double(material.color), double(material.ka), double(material.kd),
-            double(material.ks), double(material.shininess)};
+    return {to_double(material.color),  double(material.ka),        double(material.kd),
+            double(material.ks),        double(material.shininess), double(material.sigma_degrees),
+            double(material.roughness), double(material.f0),        double(material.bands),
+            double(material.minnaert_k)};
 }
 
 // The colour at one point, with what the caller needs to find discontinuities.
@@ -211,6 +217,7 @@ struct Lit {
     unsigned cone_mask = 0;  // bit k: the point is inside spot light k's cone
     // Smallest |c − cos(cutoff)| over the spot lights: near 0, float rounding
     // in the renderer may put the point on the other side of the cone's edge.
+    // Likewise the distance from the steps of `toon` (bands·N·L, (N·H)^α − 0.5).
     double cone_margin = std::numeric_limits<double>::infinity();
 };
 
@@ -244,6 +251,12 @@ Lit light_point(litkit::Reflection reflection, const RefMaterial& material,
                 if (c >= light.cos_cutoff) {
                     lit.cone_mask |= 1u << spot_index;
                     factor *= light.exponent == 0.0 ? 1.0 : std::pow(c, light.exponent);
+                    // docs/spec.md §9.3: the soft edge between the inner and outer cones.
+                    if (c < light.cos_inner) {
+                        const double t =
+                            (c - light.cos_cutoff) / (light.cos_inner - light.cos_cutoff);
+                        factor *= t * t * (3.0 - 2.0 * t);
+                    }
                 } else {
                     factor = 0.0;
                 }
@@ -270,6 +283,78 @@ Lit light_point(litkit::Reflection reflection, const RefMaterial& material,
                 const double base = glm::dot(normal, halfway);
                 if (n_dot_l > 0.0 && base > 0.0) specular = std::pow(base, material.shininess);
                 break;
+            }
+            // docs/spec.md §9.1, each written out again here in double.
+            case Reflection::OrenNayar: {
+                const double sigma = material.sigma_degrees * pi / 180.0;
+                const double a = 1.0 - 0.5 * sigma * sigma / (sigma * sigma + 0.33);
+                const double b = 0.45 * sigma * sigma / (sigma * sigma + 0.09);
+                const double n_v = std::max(glm::dot(normal, to_eye), 0.0);
+                const double s = glm::dot(to_light, to_eye) - n_dot_l * n_v;
+                diffuse = n_dot_l > 0.0
+                              ? n_dot_l * (a + b * std::max(0.0, s) / std::max(n_dot_l, n_v))
+                              : 0.0;
+                break;
+            }
+            case Reflection::CookTorrance: {
+                if (n_dot_l <= 0.0) break;
+                const double r = std::max(material.roughness, 0.045);
+                const double a2 = r * r * r * r;
+                const double m = std::max(glm::dot(normal, to_eye), 1e-4);
+                const dvec3 halfway = glm::normalize(to_light + to_eye);
+                const double n_h = std::max(glm::dot(normal, halfway), 0.0);
+                const double q = n_h * n_h * (a2 - 1.0) + 1.0;
+                const double d_ggx = a2 / (pi * q * q);
+                const double vis = 0.5 / (n_dot_l * std::sqrt(m * m * (1.0 - a2) + a2) +
+                                          m * std::sqrt(n_dot_l * n_dot_l * (1.0 - a2) + a2));
+                const double fresnel =
+                    material.f0 + (1.0 - material.f0) *
+                                      std::pow(1.0 - std::max(glm::dot(to_eye, halfway), 0.0), 5);
+                specular = pi * d_ggx * vis * fresnel * n_dot_l;
+                break;
+            }
+            case Reflection::Toon: {
+                if (n_dot_l <= 0.0) {
+                    diffuse = 0.0;
+                    break;
+                }
+                const double scaled = material.bands * n_dot_l;
+                const double level = std::min(std::floor(scaled), material.bands - 1.0);
+                diffuse = level / (material.bands - 1.0);
+                const dvec3 halfway = glm::normalize(to_light + to_eye);
+                const double n_h = std::max(glm::dot(normal, halfway), 0.0);
+                const double lobe =
+                    material.shininess == 0.0 ? 1.0 : std::pow(n_h, material.shininess);
+                specular = lobe >= 0.5 ? 1.0 : 0.0;
+                lit.cone_margin = std::min({lit.cone_margin,
+                                            std::abs(scaled - std::round(scaled)) / material.bands,
+                                            std::abs(lobe - 0.5)});
+                break;
+            }
+            case Reflection::Minnaert: {
+                if (n_dot_l <= 0.0) {
+                    diffuse = 0.0;
+                    break;
+                }
+                const double n_v = std::max(glm::dot(normal, to_eye), 0.0);
+                double base = n_dot_l * n_v;
+                if (material.minnaert_k < 1.0) base = std::max(base, 0.1);
+                diffuse = material.minnaert_k == 1.0
+                              ? n_dot_l
+                              : n_dot_l * std::pow(base, material.minnaert_k - 1.0);
+                break;
+            }
+            case Reflection::Gooch: {
+                const dvec3 reflected = 2.0 * n_dot_l * normal - to_light;
+                const double base = glm::dot(reflected, to_eye);
+                if (n_dot_l > 0.0 && base > 0.0) specular = std::pow(base, material.shininess);
+                const double t = (1.0 + n_dot_l) / 2.0;
+                const dvec3 tinted = material.kd * material.color;
+                const dvec3 cool = glm::min(0.2 * tinted + dvec3(0.0, 0.0, 0.4), dvec3(1.0));
+                const dvec3 warm = glm::min(0.6 * tinted + dvec3(0.4, 0.4, 0.0), dvec3(1.0));
+                lit.intensity += factor * light.radiance *
+                                 (t * warm + (1.0 - t) * cool + dvec3(material.ks * specular));
+                continue;
             }
         }
         lit.intensity += factor * light.radiance *

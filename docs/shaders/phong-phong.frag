@@ -45,6 +45,11 @@ struct Material {
     float kd;
     float ks;
     float shininess;
+    float sigma;       // oren-nayar, radians
+    float roughness;   // cook-torrance
+    float f0;          // cook-torrance
+    float bands;       // toon (a whole number)
+    float minnaert_k;  // minnaert
 };
 
 struct Light {
@@ -54,6 +59,7 @@ struct Light {
     vec3 direction;
     vec3 attenuation;
     float cos_cutoff;
+    float cos_inner;
     float exponent;
 };
 
@@ -63,9 +69,11 @@ struct Incidence {
     float factor;
 };
 
-// Diffuse D and specular S of the reflection model.
-struct Terms {
+// What a light's f * I_L multiplies: the diffuse weight and colour (k_d * D
+// and C for most models) and the specular S.
+struct Reflected {
     float diffuse;
+    vec3 color;
     float specular;
 };
 
@@ -120,28 +128,36 @@ Incidence point_incidence(vec3 light_position, vec3 attenuation, vec3 p) {
     return result;
 }
 
-// Spot cone: c = -L.axis; s = c^exponent where c >= cos(cutoff) (0^0 = 1),
-// else 0. axis_unit: the normalised spot direction; cos_cutoff as in
-// equations::PreparedLight (boundary slack included).
-float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float exponent) {
+// Spot cone: c = -L.axis; s = c^exponent * w where c >= cos(cutoff) (0^0 = 1),
+// else 0; w = 1 where c >= cos_inner, else t^2(3 - 2t) with
+// t = (c - cos_cutoff)/(cos_inner - cos_cutoff) (the penumbra; no smoothstep,
+// which is undefined for equal edges). axis_unit: the normalised spot
+// direction; cos_cutoff and cos_inner as in equations::PreparedLight
+// (boundary slack included).
+float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float cos_inner, float exponent) {
     float c = -(to_light.x * axis_unit.x + to_light.y * axis_unit.y + to_light.z * axis_unit.z);
-    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) : 0.0);
+    float t0 = cos_inner - cos_cutoff;
+    float t1 = (c - cos_cutoff) / (t0 > 0.0 ? t0 : 1.0);
+    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) * (c >= cos_inner ? 1.0 : t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);
 }
 
-// Diffuse D and specular S of the phong reflection model (IM3):
-// D = max(N.L, 0), S = max(R.V, 0)^shininess with R = 2(N.L)N - L;
+// The phong reflection model: the diffuse weight and colour
+// (k_d*D and C for most models) and the specular S. IM3: D = max(N.L, 0), S = max(R.V, 0)^shininess with R = 2(N.L)N - L;
 // S = 0 where R.V <= 0 or N.L <= 0.
 // normal, to_light (L) and to_eye (V) are unit vectors.
-Terms reflection_terms(vec3 normal, vec3 to_light, vec3 to_eye, float shininess) {
+Reflected reflect_light(vec3 normal, vec3 to_light, vec3 to_eye, Material material) {
     float n_dot_l = normal.x * to_light.x + normal.y * to_light.y + normal.z * to_light.z;
     float two_n_dot_l = 2.0 * n_dot_l;
     float reflected_x = two_n_dot_l * normal.x - to_light.x;
     float reflected_y = two_n_dot_l * normal.y - to_light.y;
     float reflected_z = two_n_dot_l * normal.z - to_light.z;
     float r_dot_v = reflected_x * to_eye.x + reflected_y * to_eye.y + reflected_z * to_eye.z;
-    Terms result;
-    result.diffuse = max(n_dot_l, 0.0);
-    result.specular = (n_dot_l > 0.0 ? (r_dot_v > 0.0 ? power(max(r_dot_v, 0.0), shininess) : 0.0) : 0.0);
+    Reflected result;
+    result.diffuse = material.kd * max(n_dot_l, 0.0);
+    result.color.x = material.color.x;
+    result.color.y = material.color.y;
+    result.color.z = material.color.z;
+    result.specular = (n_dot_l > 0.0 ? (r_dot_v > 0.0 ? power(max(r_dot_v, 0.0), material.shininess) : 0.0) : 0.0);
     return result;
 }
 
@@ -156,13 +172,12 @@ vec3 ambient_term(vec3 radiance, Material material) {
 
 // Any other light: f * I_L * (k_d * D * C + k_s * S), per channel;
 // the specular part takes the light's colour.
-vec3 direct_term(vec3 radiance, float factor, Terms terms, Material material) {
-    float diffuse = material.kd * terms.diffuse;
-    float specular = material.ks * terms.specular;
+vec3 direct_term(vec3 radiance, float factor, Reflected reflected, Material material) {
+    float specular = material.ks * reflected.specular;
     vec3 result;
-    result.x = factor * (radiance.x * (diffuse * material.color.x + specular));
-    result.y = factor * (radiance.y * (diffuse * material.color.y + specular));
-    result.z = factor * (radiance.z * (diffuse * material.color.z + specular));
+    result.x = factor * (radiance.x * (reflected.diffuse * reflected.color.x + specular));
+    result.y = factor * (radiance.y * (reflected.diffuse * reflected.color.y + specular));
+    result.z = factor * (radiance.z * (reflected.diffuse * reflected.color.z + specular));
     return result;
 }
 
@@ -186,12 +201,13 @@ vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {
             incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, p);
             incidence.factor =
                 incidence.factor * spot_factor(incidence.to_light, u_lights[i].direction,
-                                               u_lights[i].cos_cutoff, u_lights[i].exponent);
+                                               u_lights[i].cos_cutoff, u_lights[i].cos_inner,
+                                               u_lights[i].exponent);
         } else {
             continue;  // no other kinds
         }
-        Terms terms = reflection_terms(normal, incidence.to_light, to_eye, u_material.shininess);
-        total = total + direct_term(radiance, incidence.factor, terms, u_material);
+        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, u_material);
+        total = total + direct_term(radiance, incidence.factor, reflected, u_material);
     }
     return total;
 }

@@ -5,7 +5,7 @@
 //
 // A T must provide + - * /, comparisons yielding a mask, and, found by
 // argument-dependent lookup (or declared below for float): sqrt, pow, max,
-// select(mask, if_true, if_false). Branches on values are written as select so
+// min, floor, select(mask, if_true, if_false). Branches on values are written as select so
 // that the same text works for one point or for a batch of points.
 #pragma once
 
@@ -16,12 +16,15 @@
 #include <cmath>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 namespace litkit::equations {
 
 // Scalar versions of the primitive operations, so float works like a batch.
 inline float select(bool mask, float if_true, float if_false) { return mask ? if_true : if_false; }
 inline float max(float a, float b) { return a > b ? a : b; }
+inline float min(float a, float b) { return a < b ? a : b; }
+using std::floor;
 using std::pow;
 using std::sqrt;
 
@@ -68,15 +71,27 @@ Vec3<T> normalize(const Vec3<T>& a) {
     return (T(1) / length(a)) * a;
 }
 
-// Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d, k_s, α).
+// Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d,
+// k_s, α, and the parameters of §9.1; σ in radians).
 template <class T>
 struct MaterialT {
     Vec3<T> color;
     T ka, kd, ks, shininess;
+    T sigma, roughness, f0, bands, minnaert_k;
 };
+inline constexpr double degrees_to_radians = 3.14159265358979323846 / 180.0;
 template <class T>
 MaterialT<T> splat(const Material& m) {
-    return {splat<T>(m.color), T(m.ka), T(m.kd), T(m.ks), T(m.shininess)};
+    return {splat<T>(m.color),
+            T(m.ka),
+            T(m.kd),
+            T(m.ks),
+            T(m.shininess),
+            T(static_cast<float>(m.sigma_degrees * degrees_to_radians)),
+            T(m.roughness),
+            T(m.f0),
+            T(static_cast<float>(m.bands)),
+            T(m.minnaert_k)};
 }
 
 // ---- Light directions and factors (docs/spec.md §4, first table) ----
@@ -111,13 +126,18 @@ Incidence<T> point_incidence(const Vec3<T>& light_position, const Vec3<T>& atten
     return {(T(1) / distance) * to_light, distance_attenuation(attenuation, distance)};
 }
 
-// Spot cone: c = −L·axis; s = c^exponent where c ≥ cos(cutoff) (0^0 = 1), else 0.
-// `axis_unit` is the normalised spot direction.
+// Spot cone: c = −L·axis; s = c^exponent · w where c ≥ cos θo (0^0 = 1), else
+// 0, with the soft edge of docs/spec.md §9.3: w = 1 where c ≥ cos θi, else
+// t²(3 − 2t), t = (c − cos θo)/(cos θi − cos θo). With penumbra 0, θi = θo and
+// w = 1 throughout the cone. `axis_unit` is the normalised spot direction.
 template <class T>
 T spot_factor(const Vec3<T>& to_light, const Vec3<T>& axis_unit, const T& cos_cutoff,
-              const T& exponent) {
+              const T& cos_inner, const T& exponent) {
     T c = -dot(to_light, axis_unit);
-    return select(c >= cos_cutoff, pow(max(c, T(0)), exponent), T(0));
+    T width = cos_inner - cos_cutoff;
+    T t = (c - cos_cutoff) / select(width > T(0), width, T(1));
+    T w = select(c >= cos_inner, T(1), t * t * (T(3) - T(2) * t));
+    return select(c >= cos_cutoff, pow(max(c, T(0)), exponent) * w, T(0));
 }
 
 // ---- Reflection models (docs/spec.md §4, second table; IM1–IM4) ----
@@ -134,25 +154,98 @@ T specular_power(const T& base, const T& shininess) {
     return select(base > T(0), pow(max(base, T(0)), shininess), T(0));
 }
 
-// D and S for reflection model R at unit normal N, unit L, unit V.
+// D and S for a model of the diffuse + specular form at unit normal N, unit
+// L, unit V (docs/spec.md §4, second table, and §9.1).
 template <Reflection R, class T>
 Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
-                          const T& shininess) {
+                          const MaterialT<T>& material) {
     T n_dot_l = dot(normal, to_light);
+    const auto lit = [&](const T& value) { return select(n_dot_l > T(0), value, T(0)); };
     if constexpr (R == Reflection::Lambert) {
         return {max(n_dot_l, T(0)), T(0)};
     } else if constexpr (R == Reflection::HalfLambert) {
         T wrapped = T(0.5f) * n_dot_l + T(0.5f);
         return {wrapped * wrapped, T(0)};
-    } else if constexpr (R == Reflection::Phong) {
+    } else if constexpr (R == Reflection::Phong || R == Reflection::Gooch) {
         Vec3<T> reflected = (T(2) * n_dot_l) * normal - to_light;  // R = 2(N·L)N − L
-        T specular = specular_power(dot(reflected, to_eye), shininess);
-        return {max(n_dot_l, T(0)), select(n_dot_l > T(0), specular, T(0))};
-    } else {
-        static_assert(R == Reflection::BlinnPhong);
+        T specular = specular_power(dot(reflected, to_eye), material.shininess);
+        return {max(n_dot_l, T(0)), lit(specular)};
+    } else if constexpr (R == Reflection::BlinnPhong) {
         Vec3<T> halfway = normalize(to_light + to_eye);  // H = normalize(L + V)
-        T specular = specular_power(dot(normal, halfway), shininess);
-        return {max(n_dot_l, T(0)), select(n_dot_l > T(0), specular, T(0))};
+        T specular = specular_power(dot(normal, halfway), material.shininess);
+        return {max(n_dot_l, T(0)), lit(specular)};
+    } else if constexpr (R == Reflection::OrenNayar) {
+        // D = n_l·(A + B·max(0, s)/t), s = L·V − n_l·n_v, t = max(n_l, n_v).
+        T sigma2 = material.sigma * material.sigma;
+        T a = T(1) - T(0.5f) * sigma2 / (sigma2 + T(0.33f));
+        T b = T(0.45f) * sigma2 / (sigma2 + T(0.09f));
+        T n_dot_v = max(dot(normal, to_eye), T(0));
+        T s = dot(to_light, to_eye) - n_dot_l * n_dot_v;
+        T t = max(n_dot_l, n_dot_v);
+        T ratio = max(T(0), s) / select(t > T(0), t, T(1));
+        return {lit(n_dot_l * (a + b * ratio)), T(0)};
+    } else if constexpr (R == Reflection::CookTorrance) {
+        // D = n_l; S = π·D_GGX·Vis·F·n_l (GGX, height-correlated Smith, Schlick).
+        constexpr float pi = 3.14159265358979323846f;
+        T r = max(material.roughness, T(0.045f));
+        T a = r * r;
+        T a2 = a * a;
+        T m = max(dot(normal, to_eye), T(1e-4f));
+        Vec3<T> halfway = normalize(to_light + to_eye);
+        T n_dot_h = max(dot(normal, halfway), T(0));
+        T d_denominator = n_dot_h * n_dot_h * (a2 - T(1)) + T(1);
+        T d_ggx = a2 / (T(pi) * (d_denominator * d_denominator));
+        T vis = T(0.5f) / (n_dot_l * sqrt(m * m * (T(1) - a2) + a2) +
+                           m * sqrt(n_dot_l * n_dot_l * (T(1) - a2) + a2));
+        T one_minus_v_dot_h = T(1) - max(dot(to_eye, halfway), T(0));
+        T fifth = one_minus_v_dot_h * one_minus_v_dot_h;
+        fifth = fifth * fifth * one_minus_v_dot_h;
+        T fresnel = material.f0 + (T(1) - material.f0) * fifth;
+        return {max(n_dot_l, T(0)), lit(T(pi) * d_ggx * vis * fresnel * n_dot_l)};
+    } else if constexpr (R == Reflection::Toon) {
+        // D = min(⌊bands·n_l⌋, bands − 1)/(bands − 1); S = 1 where n_h^α ≥ 0.5.
+        T level = min(floor(material.bands * n_dot_l), material.bands - T(1));
+        Vec3<T> halfway = normalize(to_light + to_eye);
+        T n_dot_h = max(dot(normal, halfway), T(0));
+        T highlight = select(pow(n_dot_h, material.shininess) >= T(0.5f), T(1), T(0));
+        return {lit(level / (material.bands - T(1))), lit(highlight)};
+    } else {
+        static_assert(R == Reflection::Minnaert);
+        // D = n_l·b^(k − 1), b = n_l·n_v, at least 0.1 where k < 1.
+        T n_dot_v = max(dot(normal, to_eye), T(0));
+        T base = n_dot_l * n_dot_v;
+        base = select(material.minnaert_k < T(1), max(base, T(0.1f)), base);
+        return {lit(n_dot_l * pow(max(base, T(0)), material.minnaert_k - T(1))), T(0)};
+    }
+}
+
+// What multiplies f·I_L for one light: the diffuse colour, as a weight
+// times a colour (k_d·D and C for most models), and the specular S (which
+// takes the light's colour, times k_s).
+template <class T>
+struct Reflected {
+    T diffuse;
+    Vec3<T> color;
+    T specular;
+};
+
+// The reflection of model R: k_d·D·C and S for the diffuse + specular
+// models; for `gooch` (docs/spec.md §9.1) the cool-to-warm wash
+// t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
+template <Reflection R, class T>
+Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
+                     const MaterialT<T>& material) {
+    Terms<T> terms = reflection_terms<R>(normal, to_light, to_eye, material);
+    if constexpr (R == Reflection::Gooch) {
+        T t = (T(1) + dot(normal, to_light)) * T(0.5f);
+        Vec3<T> tinted = material.kd * material.color;
+        Vec3<T> cool{min(T(0.2f) * tinted.x, T(1)), min(T(0.2f) * tinted.y, T(1)),
+                     min(T(0.2f) * tinted.z + T(0.4f), T(1))};
+        Vec3<T> warm{min(T(0.6f) * tinted.x + T(0.4f), T(1)),
+                     min(T(0.6f) * tinted.y + T(0.4f), T(1)), min(T(0.6f) * tinted.z, T(1))};
+        return {T(1), t * warm + (T(1) - t) * cool, terms.specular};
+    } else {
+        return {material.kd * terms.diffuse, material.color, terms.specular};
     }
 }
 
@@ -166,12 +259,13 @@ Vec3<T> ambient_term(const Vec3<T>& radiance, const MaterialT<T>& material) {
 
 // f · I_L · (k_d · D · C + k_s · S): specular takes the light's colour.
 template <class T>
-Vec3<T> direct_term(const Vec3<T>& radiance, const T& factor, const Terms<T>& terms,
+Vec3<T> direct_term(const Vec3<T>& radiance, const T& factor, const Reflected<T>& reflected,
                     const MaterialT<T>& material) {
-    T diffuse = material.kd * terms.diffuse;
-    T specular = material.ks * terms.specular;
-    Vec3<T> reflectance{diffuse * material.color.x + specular, diffuse * material.color.y + specular,
-                        diffuse * material.color.z + specular};
+    T diffuse = reflected.diffuse;
+    T specular = material.ks * reflected.specular;
+    Vec3<T> reflectance{diffuse * reflected.color.x + specular,
+                        diffuse * reflected.color.y + specular,
+                        diffuse * reflected.color.z + specular};
     return factor * (radiance * reflectance);
 }
 
@@ -184,7 +278,8 @@ struct PreparedLight {
     glm::vec3 position{0.0f};     // point, spot
     glm::vec3 direction{0.0f};    // unit; directional: travel direction; spot: axis
     glm::vec3 attenuation{0.0f};  // point, spot
-    float cos_cutoff = 0.0f;      // spot
+    float cos_cutoff = 0.0f;      // spot: cos θo, less the slack below
+    float cos_inner = 0.0f;       // spot: cos θi (docs/spec.md §9.3), less the slack
     float exponent = 0.0f;        // spot
 };
 
@@ -197,19 +292,13 @@ PreparedLight prepare_light(const Light& light);
 // The one place a run-time Reflection becomes a template argument: calls
 // f(std::integral_constant<Reflection, R>{}) for the model chosen. Adding a
 // reflection model adds its case here and its branch in reflection_terms.
-template <class F>
+template <int I = 0, class F>
 decltype(auto) with_reflection(Reflection reflection, F&& f) {
-    switch (reflection) {
-        case Reflection::Lambert:
-            return f(std::integral_constant<Reflection, Reflection::Lambert>{});
-        case Reflection::HalfLambert:
-            return f(std::integral_constant<Reflection, Reflection::HalfLambert>{});
-        case Reflection::Phong:
-            break;
-        case Reflection::BlinnPhong:
-            return f(std::integral_constant<Reflection, Reflection::BlinnPhong>{});
+    constexpr auto model = static_cast<Reflection>(I);
+    if constexpr (I + 1 < reflection_count) {
+        if (reflection != model) return with_reflection<I + 1>(reflection, std::forward<F>(f));
     }
-    return f(std::integral_constant<Reflection, Reflection::Phong>{});
+    return f(std::integral_constant<Reflection, model>{});
 }
 
 // shade_point for one point with plain floats: the scalar path that
@@ -242,12 +331,12 @@ Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& m
                 incidence = point_incidence(splat<T>(light.position), splat<T>(light.attenuation), p);
                 incidence.factor =
                     incidence.factor * spot_factor(incidence.to_light, splat<T>(light.direction),
-                                                   T(light.cos_cutoff), T(light.exponent));
+                                                   T(light.cos_cutoff), T(light.cos_inner),
+                                                   T(light.exponent));
                 break;
         }
-        Terms<T> terms =
-            reflection_terms<R>(normal, incidence.to_light, to_eye, material.shininess);
-        total = total + direct_term(radiance, incidence.factor, terms, material);
+        Reflected<T> reflected = reflect<R>(normal, incidence.to_light, to_eye, material);
+        total = total + direct_term(radiance, incidence.factor, reflected, material);
     }
     return total;
 }

@@ -14,12 +14,38 @@
 
 namespace litkit {
 
-// docs/spec.md §4, IM1–IM4.
-enum class Reflection { Lambert, HalfLambert, Phong, BlinnPhong };
+// docs/spec.md §4 (IM1–IM4) and §9.1 (LC2). The order is the spec's, and that
+// of every list users see (validation's names, `litkit view`'s keys 1–9).
+// The models are one list: this enumeration, its row in `reflection_models`
+// (lighting.cpp) and its branch in equations::reflect are all a new model
+// needs; every path (scalar, SIMD, GLSL, validation) follows from them.
+enum class Reflection {
+    Lambert,
+    HalfLambert,
+    Phong,
+    BlinnPhong,
+    OrenNayar,
+    CookTorrance,
+    Toon,
+    Minnaert,
+    Gooch,
+};
+inline constexpr int reflection_count = static_cast<int>(Reflection::Gooch) + 1;
+
+// One reflection model as users see it: its scene-file name and a one-line
+// summary of its equations (printed into generated shaders).
+struct ReflectionModel {
+    Reflection id;
+    std::string_view name;
+    std::string_view summary;
+};
+// Every model, in the order of the enumeration.
+std::span<const ReflectionModel> reflection_models();
 // docs/spec.md §3, DD8–DD10.
 enum class Shading { Flat, Gouraud, Phong };
 
-// Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong".
+// Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
+// "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
 std::string_view to_string(Reflection reflection);
 // Scene-file spelling: "flat", "gouraud", "phong".
 std::string_view to_string(Shading shading);
@@ -28,12 +54,19 @@ std::optional<Shading> parse_shading(std::string_view text);
 
 // Surface coefficients. `color` is C of docs/spec.md §4: the material colour / 255,
 // per channel in [0, 1].
+// The parameters of docs/spec.md §9.1 are here whatever the model, so that
+// switching models keeps them; a model ignores those it does not use.
 struct Material {
     glm::vec3 color{1.0f, 1.0f, 1.0f};
     float ka = 0.1f;
     float kd = 0.7f;
     float ks = 0.5f;
     float shininess = 32.0f;
+    float sigma_degrees = 30.0f;  // oren-nayar: surface roughness σ, 0–90°
+    float roughness = 0.5f;       // cook-torrance: perceptual roughness r, 0–1
+    float f0 = 0.04f;             // cook-torrance: reflectance at normal incidence, 0–1
+    int bands = 3;                // toon: diffuse levels, 2–16
+    float minnaert_k = 1.5f;      // minnaert: limb darkening k, 0–4
 };
 
 // Light kinds: a closed set behind one variant (docs/spec.md §4 table).
@@ -51,6 +84,7 @@ struct SpotLight {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // axis of the cone; need not be unit
     float cutoff_degrees = 30.0f;            // half-angle of the cone
     float exponent = 0.0f;
+    float penumbra = 0.0f;  // docs/spec.md §9.3: the soft fraction of the cone, 0–1
 };
 using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotLight>;
 

@@ -179,6 +179,7 @@ std::string lights_source(const Scene& scene) {
         }
         if (l.kind == Kind::Spot) {
             out += ",\n     .cos_cutoff = " + float_literal(l.cos_cutoff);
+            out += ",\n     .cos_inner = " + float_literal(l.cos_inner);
             out += ",\n     .exponent = " + float_literal(l.exponent);
         }
         out += "},\n";
@@ -244,12 +245,16 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
         }
         out.arrays += "\n";
 
-        const Material& m = object.material;
+        const equations::MaterialT<float> m = equations::splat<float>(object.material);
         out.objects += "    {.name = \"" + label + "\",\n     .program = " +
                        std::to_string(models.program[i]) + ",  // " + pair_file_stem(pair) +
-                       "\n     .material = {.color = " + vec3_braces(m.color) + ", .ka = " +
-                       float_literal(m.ka) + ", .kd = " + float_literal(m.kd) + ", .ks = " +
-                       float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
+                       "\n     .material = {.color = " + vec3_braces(object.material.color) +
+                       ", .ka = " + float_literal(m.ka) + ", .kd = " + float_literal(m.kd) +
+                       ", .ks = " + float_literal(m.ks) + ", .shininess = " +
+                       float_literal(m.shininess) + ",\n                  .sigma = " +
+                       float_literal(m.sigma) + ", .roughness = " + float_literal(m.roughness) +
+                       ", .f0 = " + float_literal(m.f0) + ", .bands = " + float_literal(m.bands) +
+                       ", .minnaert_k = " + float_literal(m.minnaert_k) +
                        "},\n     .vertices = " + id +
                        "_vertices,\n     .vertex_floats = std::size(" + id + "_vertices)";
         if (!flat) {

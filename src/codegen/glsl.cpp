@@ -70,77 +70,67 @@ Function point_incidence_function() {
 Function spot_factor_function() {
     Function function;
     function.doc =
-        "Spot cone: c = -L.axis; s = c^exponent where c >= cos(cutoff) (0^0 = 1),\n"
-        "else 0. axis_unit: the normalised spot direction; cos_cutoff as in\n"
-        "equations::PreparedLight (boundary slack included).";
+        "Spot cone: c = -L.axis; s = c^exponent * w where c >= cos(cutoff) (0^0 = 1),\n"
+        "else 0; w = 1 where c >= cos_inner, else t^2(3 - 2t) with\n"
+        "t = (c - cos_cutoff)/(cos_inner - cos_cutoff) (the penumbra; no smoothstep,\n"
+        "which is undefined for equal edges). axis_unit: the normalised spot\n"
+        "direction; cos_cutoff and cos_inner as in equations::PreparedLight\n"
+        "(boundary slack included).";
     function.return_type = "float";
     function.name = "spot_factor";
-    function.parameters = "vec3 to_light, vec3 axis_unit, float cos_cutoff, float exponent";
+    function.parameters =
+        "vec3 to_light, vec3 axis_unit, float cos_cutoff, float cos_inner, float exponent";
     const Vec3<Expr> to_light = vec3_variable("to_light");
     const Vec3<Expr> axis_unit = vec3_variable("axis_unit");
     function.outputs.push_back(
         {"", equations::spot_factor(to_light, axis_unit, Expr::variable("cos_cutoff"),
-                                    Expr::variable("exponent"))});
+                                    Expr::variable("cos_inner"), Expr::variable("exponent"))});
     function.hints.push_back({"c", -equations::dot(to_light, axis_unit)});
     return function;
 }
 
 Function reflection_terms_function(Reflection reflection) {
     Function function;
-    function.return_type = "Terms";
-    function.name = "reflection_terms";
-    function.parameters = "vec3 normal, vec3 to_light, vec3 to_eye, float shininess";
+    function.return_type = "Reflected";
+    function.name = "reflect_light";
+    function.parameters = "vec3 normal, vec3 to_light, vec3 to_eye, Material material";
     const Vec3<Expr> normal = vec3_variable("normal");
     const Vec3<Expr> to_light = vec3_variable("to_light");
     const Vec3<Expr> to_eye = vec3_variable("to_eye");
-    const Expr shininess = Expr::variable("shininess");
-    const equations::Terms<Expr> terms = equations::with_reflection(reflection, [&](auto model) {
-        return equations::reflection_terms<decltype(model)::value>(normal, to_light, to_eye,
-                                                                   shininess);
-    });
-    function.outputs.push_back({"result.diffuse", terms.diffuse});
-    function.outputs.push_back({"result.specular", terms.specular});
+    const equations::MaterialT<Expr> material = material_variable("material");
+    const equations::Reflected<Expr> reflected =
+        equations::with_reflection(reflection, [&](auto model) {
+            return equations::reflect<decltype(model)::value>(normal, to_light, to_eye, material);
+        });
+    function.outputs.push_back({"result.diffuse", reflected.diffuse});
+    add_vec3_output(function, "result.color", reflected.color);
+    function.outputs.push_back({"result.specular", reflected.specular});
 
-    const std::string intro = "Diffuse D and specular S of the " +
-                              std::string(to_string(reflection)) +
-                              " reflection model (";
+    std::string summary;
+    for (const ReflectionModel& model : reflection_models())
+        if (model.id == reflection) summary = model.summary;
+    function.doc = "The " + std::string(to_string(reflection)) +
+                   " reflection model: the diffuse weight and colour\n(k_d*D and C for most models) and the specular S. " +
+                   summary + "\nnormal, to_light (L) and to_eye (V) are unit vectors.";
+
+    // Names for what the equations name, where the model computes them.
     const Expr n_dot_l = equations::dot(normal, to_light);
     function.hints.push_back({"n_dot_l", n_dot_l});
-    switch (reflection) {
-        case Reflection::Lambert:
-            function.doc = intro + "IM1):\nD = max(N.L, 0), S = 0.";
-            break;
-        case Reflection::HalfLambert:
-            function.doc = intro + "IM2):\nD = (0.5*(N.L) + 0.5)^2, S = 0.";
-            function.hints.push_back({"wrapped", Expr(0.5f) * n_dot_l + Expr(0.5f)});
-            break;
-        case Reflection::Phong: {
-            function.doc = intro +
-                           "IM3):\nD = max(N.L, 0), S = max(R.V, 0)^shininess with R = 2(N.L)N "
-                           "- L;\nS = 0 where R.V <= 0 or N.L <= 0.";
-            const Expr two_n_dot_l = Expr(2.0f) * n_dot_l;
-            const Vec3<Expr> reflected = two_n_dot_l * normal - to_light;
-            function.hints.push_back({"two_n_dot_l", two_n_dot_l});
-            add_vec3_hint(function, "reflected", reflected);
-            function.hints.push_back({"r_dot_v", equations::dot(reflected, to_eye)});
-            break;
-        }
-        case Reflection::BlinnPhong: {
-            function.doc = intro +
-                           "IM4):\nD = max(N.L, 0), S = max(N.H, 0)^shininess with H = "
-                           "normalize(L + V);\nS = 0 where N.H <= 0 or N.L <= 0.";
-            const Vec3<Expr> l_plus_v = to_light + to_eye;
-            const Expr l_plus_v_length = equations::length(l_plus_v);
-            add_vec3_hint(function, "l_plus_v", l_plus_v);
-            function.hints.push_back({"l_plus_v_length", l_plus_v_length});
-            function.hints.push_back({"inv_l_plus_v_length", Expr(1.0f) / l_plus_v_length});
-            const Vec3<Expr> halfway = equations::normalize(l_plus_v);
-            add_vec3_hint(function, "halfway", halfway);
-            function.hints.push_back({"n_dot_h", equations::dot(normal, halfway)});
-            break;
-        }
-    }
-    function.doc += "\nnormal, to_light (L) and to_eye (V) are unit vectors.";
+    const Expr two_n_dot_l = Expr(2.0f) * n_dot_l;
+    const Vec3<Expr> reflected_direction = two_n_dot_l * normal - to_light;
+    function.hints.push_back({"two_n_dot_l", two_n_dot_l});
+    add_vec3_hint(function, "reflected", reflected_direction);
+    function.hints.push_back({"r_dot_v", equations::dot(reflected_direction, to_eye)});
+    function.hints.push_back({"wrapped", Expr(0.5f) * n_dot_l + Expr(0.5f)});
+    const Vec3<Expr> l_plus_v = to_light + to_eye;
+    const Expr l_plus_v_length = equations::length(l_plus_v);
+    add_vec3_hint(function, "l_plus_v", l_plus_v);
+    function.hints.push_back({"l_plus_v_length", l_plus_v_length});
+    function.hints.push_back({"inv_l_plus_v_length", Expr(1.0f) / l_plus_v_length});
+    const Vec3<Expr> halfway = equations::normalize(l_plus_v);
+    add_vec3_hint(function, "halfway", halfway);
+    function.hints.push_back({"n_dot_h", equations::dot(normal, halfway)});
+    function.hints.push_back({"n_dot_v", max(equations::dot(normal, to_eye), Expr(0.0f))});
     return function;
 }
 
@@ -163,15 +153,16 @@ Function direct_term_function() {
         "the specular part takes the light's colour.";
     function.return_type = "vec3";
     function.name = "direct_term";
-    function.parameters = "vec3 radiance, float factor, Terms terms, Material material";
+    function.parameters = "vec3 radiance, float factor, Reflected reflected, Material material";
     const equations::MaterialT<Expr> material = material_variable("material");
-    const equations::Terms<Expr> terms{Expr::variable("terms.diffuse"),
-                                       Expr::variable("terms.specular")};
+    const equations::Reflected<Expr> reflected{Expr::variable("reflected.diffuse"),
+                                               vec3_variable("reflected.color"),
+                                               Expr::variable("reflected.specular")};
     add_vec3_output(function, "result",
                     equations::direct_term(vec3_variable("radiance"), Expr::variable("factor"),
-                                           terms, material));
-    function.hints.push_back({"diffuse", material.kd * terms.diffuse});
-    function.hints.push_back({"specular", material.ks * terms.specular});
+                                           reflected, material));
+    function.hints.push_back({"diffuse", reflected.diffuse});
+    function.hints.push_back({"specular", material.ks * reflected.specular});
     return function;
 }
 
@@ -279,6 +270,11 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "    float kd;\n"
         "    float ks;\n"
         "    float shininess;\n"
+        "    float sigma;       // oren-nayar, radians\n"
+        "    float roughness;   // cook-torrance\n"
+        "    float f0;          // cook-torrance\n"
+        "    float bands;       // toon (a whole number)\n"
+        "    float minnaert_k;  // minnaert\n"
         "};\n"
         "\n"
         "struct Light {\n"
@@ -288,6 +284,7 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "    vec3 direction;\n"
         "    vec3 attenuation;\n"
         "    float cos_cutoff;\n"
+        "    float cos_inner;\n"
         "    float exponent;\n"
         "};\n"
         "\n"
@@ -297,9 +294,11 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "    float factor;\n"
         "};\n"
         "\n"
-        "// Diffuse D and specular S of the reflection model.\n"
-        "struct Terms {\n"
+        "// What a light's f * I_L multiplies: the diffuse weight and colour (k_d * D\n"
+        "// and C for most models) and the specular S.\n"
+        "struct Reflected {\n"
         "    float diffuse;\n"
+        "    vec3 color;\n"
         "    float specular;\n"
         "};\n"
         "\n"
@@ -351,13 +350,14 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "                incidence.factor * spot_factor(incidence.to_light, "
         "u_lights[i].direction,\n"
         "                                               u_lights[i].cos_cutoff, "
-        "u_lights[i].exponent);\n"
+        "u_lights[i].cos_inner,\n"
+        "                                               u_lights[i].exponent);\n"
         "        } else {\n"
         "            continue;  // no other kinds\n"
         "        }\n"
-        "        Terms terms = reflection_terms(normal, incidence.to_light, to_eye, "
-        "u_material.shininess);\n"
-        "        total = total + direct_term(radiance, incidence.factor, terms, u_material);\n"
+        "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, "
+        "u_material);\n"
+        "        total = total + direct_term(radiance, incidence.factor, reflected, u_material);\n"
         "    }\n"
         "    return total;\n"
         "}\n";

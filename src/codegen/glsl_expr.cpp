@@ -34,6 +34,7 @@ int arity(Op op) {
             return 0;
         case Op::Negate:
         case Op::Sqrt:
+        case Op::Floor:
             return 1;
         case Op::Select:
             return 3;
@@ -97,15 +98,19 @@ Expr pow(const Expr& base, const Expr& exponent) {
     return Expr(make_node(Op::Pow, base.node(), exponent.node()));
 }
 Expr sqrt(const Expr& a) { return Expr(make_node(Op::Sqrt, a.node())); }
+Expr min(const Expr& a, const Expr& b) { return Expr(make_node(Op::Min, a.node(), b.node())); }
+Expr floor(const Expr& a) { return Expr(make_node(Op::Floor, a.node())); }
 
 equations::Vec3<Expr> vec3_variable(const std::string& name) {
     return {Expr::variable(name + ".x"), Expr::variable(name + ".y"), Expr::variable(name + ".z")};
 }
 
 equations::MaterialT<Expr> material_variable(const std::string& name) {
-    return {vec3_variable(name + ".color"), Expr::variable(name + ".ka"),
-            Expr::variable(name + ".kd"), Expr::variable(name + ".ks"),
-            Expr::variable(name + ".shininess")};
+    return {vec3_variable(name + ".color"),         Expr::variable(name + ".ka"),
+            Expr::variable(name + ".kd"),           Expr::variable(name + ".ks"),
+            Expr::variable(name + ".shininess"),    Expr::variable(name + ".sigma"),
+            Expr::variable(name + ".roughness"),    Expr::variable(name + ".f0"),
+            Expr::variable(name + ".bands"),        Expr::variable(name + ".minnaert_k")};
 }
 
 // ---- Printing ----
@@ -185,6 +190,10 @@ public:
                         atomic};
             case Op::Sqrt:
                 return {"sqrt(" + arg(0).text + ")", atomic};
+            case Op::Min:
+                return {"min(" + arg(0).text + ", " + arg(1).text + ")", atomic};
+            case Op::Floor:
+                return {"floor(" + arg(0).text + ")", atomic};
         }
         throw std::logic_error("glsl::Printer: unknown operation");
     }
@@ -366,6 +375,12 @@ float evaluate_node(const Node& node, const Bindings& bindings,
             break;
         case Op::Sqrt:
             result = std::sqrt(arg(0));
+            break;
+        case Op::Min:
+            result = equations::min(arg(0), arg(1));
+            break;
+        case Op::Floor:
+            result = std::floor(arg(0));
             break;
     }
     memo.emplace(&node, result);

@@ -7,7 +7,7 @@
 // simplified, so the GPU performs the same float operations as the CPU.
 //
 // The operations are the ones equations.hpp asks of a T: + - * /, unary -,
-// comparisons giving a Mask, and select, max, pow, sqrt found by
+// comparisons giving a Mask, and select, max, min, pow, sqrt, floor found by
 // argument-dependent lookup (hence namespace litkit::glsl).
 #pragma once
 
@@ -44,8 +44,10 @@ struct Node {
         GreaterEqual,
         Select,  // args[0] ? args[1] : args[2]
         Max,
+        Min,
         Pow,
         Sqrt,
+        Floor,
     };
     Op op = Op::Literal;
     float value = 0.0f;
@@ -89,8 +91,10 @@ Mask operator>(const Expr& a, const Expr& b);
 Mask operator>=(const Expr& a, const Expr& b);
 Expr select(const Mask& mask, const Expr& if_true, const Expr& if_false);
 Expr max(const Expr& a, const Expr& b);
+Expr min(const Expr& a, const Expr& b);
 Expr pow(const Expr& base, const Expr& exponent);
 Expr sqrt(const Expr& a);
+Expr floor(const Expr& a);
 
 // {name.x, name.y, name.z}: a GLSL vec3 input.
 equations::Vec3<Expr> vec3_variable(const std::string& name);

@@ -46,12 +46,16 @@ void require_gl_libraries() {
 }
 
 core::LightData light_data(const equations::PreparedLight& light) {
-    return {static_cast<int>(light.kind), light.radiance,  light.position, light.direction,
-            light.attenuation,            light.cos_cutoff, light.exponent};
+    return {static_cast<int>(light.kind), light.radiance,   light.position,
+            light.direction,              light.attenuation, light.cos_cutoff,
+            light.cos_inner,              light.exponent};
 }
 
 core::MaterialData material_data(const Material& material) {
-    return {material.color, material.ka, material.kd, material.ks, material.shininess};
+    // The values every other path uses, converted as they are (σ to radians).
+    const equations::MaterialT<float> m = equations::splat<float>(material);
+    return {material.color, m.ka,    m.kd,        m.ks,   m.shininess,
+            m.sigma,        m.roughness, m.f0,    m.bands, m.minnaert_k};
 }
 
 // Every light is a uniform struct of about 24 components (vec3s padded to

@@ -12,11 +12,29 @@
 namespace litkit {
 
 namespace {
-constexpr std::array<std::pair<Reflection, std::string_view>, 4> reflection_names{{
-    {Reflection::Lambert, "lambert"},
-    {Reflection::HalfLambert, "half-lambert"},
-    {Reflection::Phong, "phong"},
-    {Reflection::BlinnPhong, "blinn-phong"},
+// The family's one list (docs/spec.md §4 and §9.1), in the enumeration's order.
+constexpr std::array<ReflectionModel, reflection_count> reflection_table{{
+    {Reflection::Lambert, "lambert", "IM1: D = max(N.L, 0), S = 0."},
+    {Reflection::HalfLambert, "half-lambert", "IM2: D = (0.5*(N.L) + 0.5)^2, S = 0."},
+    {Reflection::Phong, "phong",
+     "IM3: D = max(N.L, 0), S = max(R.V, 0)^shininess with R = 2(N.L)N - L;\n"
+     "S = 0 where R.V <= 0 or N.L <= 0."},
+    {Reflection::BlinnPhong, "blinn-phong",
+     "IM4: D = max(N.L, 0), S = max(N.H, 0)^shininess with H = normalize(L + V);\n"
+     "S = 0 where N.H <= 0 or N.L <= 0."},
+    {Reflection::OrenNayar, "oren-nayar",
+     "D = n_l*(A + B*max(0, L.V - n_l*n_v)/max(n_l, n_v)), A = 1 - 0.5s^2/(s^2 + 0.33),\n"
+     "B = 0.45s^2/(s^2 + 0.09), s = sigma; S = 0."},
+    {Reflection::CookTorrance, "cook-torrance",
+     "D = n_l; S = pi*D_GGX*Vis*F*n_l (GGX distribution, height-correlated Smith\n"
+     "visibility, Schlick Fresnel from f0; a = max(roughness, 0.045)^2)."},
+    {Reflection::Toon, "toon",
+     "D = min(floor(bands*n_l), bands - 1)/(bands - 1); S = 1 where n_h^shininess >= 0.5."},
+    {Reflection::Minnaert, "minnaert",
+     "D = n_l*b^(k - 1), b = n_l*n_v (at least 0.1 where k < 1); S = 0."},
+    {Reflection::Gooch, "gooch",
+     "diffuse colour t*warm + (1 - t)*cool, t = (1 + N.L)/2, cool = min(0.2*kd*C +\n"
+     "(0, 0, 0.4), 1), warm = min(0.6*kd*C + (0.4, 0.4, 0), 1); S as phong."},
 }};
 constexpr std::array<std::pair<Shading, std::string_view>, 3> shading_names{{
     {Shading::Flat, "flat"},
@@ -25,9 +43,11 @@ constexpr std::array<std::pair<Shading, std::string_view>, 3> shading_names{{
 }};
 }  // namespace
 
+std::span<const ReflectionModel> reflection_models() { return reflection_table; }
+
 std::string_view to_string(Reflection reflection) {
-    for (const auto& [value, name] : reflection_names)
-        if (value == reflection) return name;
+    for (const ReflectionModel& model : reflection_table)
+        if (model.id == reflection) return model.name;
     return "?";
 }
 
@@ -38,8 +58,8 @@ std::string_view to_string(Shading shading) {
 }
 
 std::optional<Reflection> parse_reflection(std::string_view text) {
-    for (const auto& [value, name] : reflection_names)
-        if (name == text) return value;
+    for (const ReflectionModel& model : reflection_table)
+        if (model.name == text) return model.id;
     return std::nullopt;
 }
 
@@ -74,6 +94,9 @@ PreparedLight prepare_light(const Light& light) {
                 prepared.direction = glm::normalize(kind.direction);
                 double radians = static_cast<double>(kind.cutoff_degrees) * (M_PI / 180.0);
                 prepared.cos_cutoff = static_cast<float>(std::cos(radians)) - spot_boundary_slack;
+                // docs/spec.md §9.3: θi = θo·(1 − penumbra); penumbra 0 gives the hard edge.
+                double inner = radians * (1.0 - static_cast<double>(kind.penumbra));
+                prepared.cos_inner = static_cast<float>(std::cos(inner)) - spot_boundary_slack;
                 prepared.exponent = kind.exponent;
             }
         },
