@@ -53,7 +53,7 @@ void expect_edges_and_background_agree(const Agreement& a) {
 // The matrix scenes: one object, one light of the kind asked for (plus a dim
 // ambient light with the others, so unlit parts are not all black).
 enum class Shape { Sphere, Cube };
-enum class LightType { Ambient, Directional, Point, Spot };
+enum class LightType { Ambient, Directional, Point, Spot, SoftSpot };
 
 litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection reflection,
                            litkit::Shading shading) {
@@ -89,6 +89,11 @@ litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection
             // Aimed off-centre with a narrow cone, so the cone's edge crosses the object.
             light.kind = litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
                                            20.0f, 2.0f};
+            break;
+        case LightType::SoftSpot:
+            // The same cone with a soft edge over its outer half (docs/spec.md §9.3).
+            light.kind = litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
+                                           20.0f, 2.0f, 0.5f};
             break;
     }
     light.color = glm::vec3(255.0f, 240.0f, 220.0f) / 255.0f;
@@ -187,12 +192,13 @@ TEST(GlBackend, ManyLights) {
 }
 
 TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
-    const litkit::Reflection reflections[] = {litkit::Reflection::Lambert, litkit::Reflection::HalfLambert,
-                                              litkit::Reflection::Phong, litkit::Reflection::BlinnPhong};
+    std::vector<litkit::Reflection> reflections;
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        reflections.push_back(model.id);
     const litkit::Shading shadings[] = {litkit::Shading::Flat, litkit::Shading::Gouraud,
                                         litkit::Shading::Phong};
     const LightType lights[] = {LightType::Ambient, LightType::Directional, LightType::Point,
-                                LightType::Spot};
+                                LightType::Spot, LightType::SoftSpot};
     int cases = 0;
     double lowest = 1.0;
     int worst = 0;
@@ -217,7 +223,7 @@ TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
             }
         }
     }
-    EXPECT_EQ(cases, 2 * 4 * 3 * 4);
+    EXPECT_EQ(cases, 2 * litkit::reflection_count * 3 * 5);
     std::cout << "matrix: " << cases << " scenes, lowest fraction within 2/255 " << lowest
               << ", largest difference " << worst << "/255\n";
 }

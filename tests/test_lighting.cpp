@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <span>
@@ -982,5 +983,240 @@ TEST(ShadingNames, RejectMisspellings) {
     for (std::string_view text : {"Phong", "Flat", "GOURAUD", "smooth", "blinn", "gouraud ", ""}) {
         SCOPED_TRACE(text);
         EXPECT_FALSE(litkit::parse_shading(text).has_value());
+    }
+}
+
+// ============================================================================
+// The models of docs/spec.md §9.1 and the soft spot edge of §9.3, against
+// values computed by hand (each comment shows the arithmetic).
+
+namespace {
+
+litkit::equations::Reflected<float> reflect_at(Reflection reflection, const Material& material,
+                                               const glm::vec3& normal, const glm::vec3& to_light,
+                                               const glm::vec3& to_eye) {
+    using namespace litkit::equations;
+    const MaterialT<float> m = splat<float>(material);
+    return with_reflection(reflection, [&](auto model) {
+        return reflect<decltype(model)::value>(splat<float>(normal), splat<float>(to_light),
+                                               splat<float>(to_eye), m);
+    });
+}
+
+// A unit vector in the xy-plane at `degrees` from +y (N), towards +x.
+glm::vec3 at_angle(float degrees) {
+    const float radians = glm::radians(degrees);
+    return {std::sin(radians), std::cos(radians), 0.0f};
+}
+
+}  // namespace
+
+TEST(CookTorrance, HeadOnGivesTheClosedFormSpecular) {
+    // L = V = N, r = 0.5: a = 0.25, a² = 0.0625, n_h = 1, m = 1.
+    // D_GGX = a²/(π·(1·(a² − 1) + 1)²) = 0.0625/(π·0.0625²) = 16/π = 5.0930.
+    // Vis = 0.5/(1·√(1 − a² + a²) + 1·√(1 − a² + a²)) = 0.25.
+    // F = f0 + (1 − f0)·(1 − 1)⁵ = 0.04.  S = π·5.0930·0.25·0.04·1 = 0.16; D = 1.
+    Material material;
+    material.roughness = 0.5f;
+    material.f0 = 0.04f;
+    const auto r = reflect_at(Reflection::CookTorrance, material, {0, 1, 0}, {0, 1, 0}, {0, 1, 0});
+    EXPECT_NEAR(r.specular, 0.16f, 1e-5f);
+    EXPECT_NEAR(r.diffuse, material.kd * 1.0f, 1e-6f);
+}
+
+TEST(CookTorrance, NoLightFromBehindAndRoughnessClampedAt0045) {
+    Material material;
+    // N·L < 0: D = S = 0.
+    const auto behind =
+        reflect_at(Reflection::CookTorrance, material, {0, 1, 0}, {0, -1, 0}, {0, 1, 0});
+    EXPECT_EQ(behind.specular, 0.0f);
+    EXPECT_EQ(behind.diffuse, 0.0f);
+    // roughness 0 acts as 0.045: head on, S = π·D·Vis·F with a = 0.045² and
+    // D = 1/(π·a²), Vis = 0.25: S = 0.25·f0/a² = 0.25·0.04/4.100625e-6 = 2438.65.
+    material.roughness = 0.0f;
+    const auto sharp =
+        reflect_at(Reflection::CookTorrance, material, {0, 1, 0}, {0, 1, 0}, {0, 1, 0});
+    EXPECT_NEAR(sharp.specular / 2438.65f, 1.0f, 1e-3f);
+}
+
+TEST(OrenNayar, ThirtyDegreeSigmaGivesTheClosedFormTerms) {
+    // σ = 30° = 0.523599 rad, σ² = 0.274156:
+    //   A = 1 − 0.5·0.274156/(0.274156 + 0.33) = 0.773109,
+    //   B = 0.45·0.274156/(0.274156 + 0.09) = 0.338792.
+    // L and V both 60° from N, same side (L = V): n_l = n_v = 0.5, L·V = 1,
+    //   s = 1 − 0.25 = 0.75, t = 0.5: D = 0.5·(A + B·1.5) = 0.640648.
+    // Opposite sides: L·V = cos 120° = −0.5, s = −0.75 → 0: D = 0.5·A = 0.386555.
+    Material material;
+    material.kd = 1.0f;
+    material.sigma_degrees = 30.0f;
+    const auto same =
+        reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(60));
+    EXPECT_NEAR(same.diffuse, 0.640648f, 1e-5f);
+    EXPECT_EQ(same.specular, 0.0f);
+    const auto opposite =
+        reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(-60));
+    EXPECT_NEAR(opposite.diffuse, 0.386555f, 1e-5f);
+    // σ = 0: A = 1, B = 0, Lambert.
+    material.sigma_degrees = 0.0f;
+    const auto smooth =
+        reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(-20));
+    EXPECT_NEAR(smooth.diffuse, 0.5f, 1e-6f);
+    // Light behind: 0.
+    const auto behind =
+        reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(100), at_angle(0));
+    EXPECT_EQ(behind.diffuse, 0.0f);
+}
+
+TEST(Toon, BandsQuantiseTheDiffuseAndTheHighlightIsAStep) {
+    // 3 bands: D = min(⌊3·n_l⌋, 2)/2. n_l = 0.5 → ⌊1.5⌋ = 1 → 0.5; n_l = 0.2 → 0;
+    // n_l = 1 → min(3, 2)/2 = 1.
+    Material material;
+    material.kd = 1.0f;
+    material.bands = 3;
+    material.shininess = 2.0f;
+    const glm::vec3 n{0, 1, 0};
+    EXPECT_NEAR(reflect_at(Reflection::Toon, material, n, at_angle(60), n).diffuse, 0.5f, 1e-6f);
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, at_angle(78.463f), n).diffuse, 0.0f);
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, n, n).diffuse, 1.0f);
+    // Highlight: L = V = N gives n_h = 1, 1² ≥ 0.5: S = 1. L at 60°, V = N:
+    // H at 30°, n_h = cos 30° = 0.866, n_h² = 0.75 ≥ 0.5: S = 1. L at 120°:
+    // N·L < 0, S = 0. L at 80°, V at −80°: H = N... use V at 0°, L at 80°: H at
+    // 40°, n_h² = cos²40° = 0.587 ≥ 0.5: 1; L at 100° is behind: 0.
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, n, n).specular, 1.0f);
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, at_angle(60), n).specular, 1.0f);
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, at_angle(120), n).specular, 0.0f);
+    // L at 60°, V at −60°: H = N·... H = normalize(L + V) = N, n_h = 1: S = 1;
+    // shininess 8 with H at 30°: 0.866⁸ = 0.316 < 0.5: S = 0.
+    material.shininess = 8.0f;
+    EXPECT_EQ(reflect_at(Reflection::Toon, material, n, at_angle(60), n).specular, 0.0f);
+}
+
+TEST(Minnaert, LimbDarkeningFollowsTheClosedForm) {
+    Material material;
+    material.kd = 1.0f;
+    const glm::vec3 n{0, 1, 0};
+    // k = 1.5, n_l = 0.5, V = N (n_v = 1): b = 0.5, D = 0.5·0.5^0.5 = 0.353553.
+    material.minnaert_k = 1.5f;
+    EXPECT_NEAR(reflect_at(Reflection::Minnaert, material, n, at_angle(60), n).diffuse, 0.353553f,
+                1e-6f);
+    // k = 1: D = n_l (b⁰ = 1), Lambert.
+    material.minnaert_k = 1.0f;
+    EXPECT_NEAR(reflect_at(Reflection::Minnaert, material, n, at_angle(60), at_angle(-70)).diffuse,
+                0.5f, 1e-6f);
+    // k = 0.5, n_l = 0.5, n_v = cos 84.26° = 0.1: b = 0.05 → at least 0.1:
+    // D = 0.5·0.1^(−0.5) = 1.581139.
+    material.minnaert_k = 0.5f;
+    const glm::vec3 grazing{std::sqrt(1.0f - 0.01f), 0.1f, 0.0f};
+    EXPECT_NEAR(reflect_at(Reflection::Minnaert, material, n, at_angle(60), grazing).diffuse,
+                1.581139f, 1e-5f);
+    // k = 0 with V ⊥ N (b = 0 → 0.1): D = 0.5·0.1^(−1) = 5; light behind: 0.
+    material.minnaert_k = 0.0f;
+    EXPECT_NEAR(reflect_at(Reflection::Minnaert, material, n, at_angle(60), {1, 0, 0}).diffuse,
+                5.0f, 1e-4f);
+    EXPECT_EQ(reflect_at(Reflection::Minnaert, material, n, at_angle(95), n).diffuse, 0.0f);
+}
+
+TEST(Gooch, CoolAndWarmEndsAndTheWashBetween) {
+    // C = (1, 0, 0), k_d = 1: cool = min(0.2·C + (0, 0, 0.4), 1) = (0.2, 0, 0.4),
+    // warm = min(0.6·C + (0.4, 0.4, 0), 1) = (1, 0.4, 0).
+    Material material;
+    material.color = {1, 0, 0};
+    material.kd = 1.0f;
+    material.ks = 0.0f;
+    const glm::vec3 n{0, 1, 0};
+    // N·L = 1: t = 1, all warm; the weight multiplying the colour is 1.
+    const auto lit = reflect_at(Reflection::Gooch, material, n, n, n);
+    EXPECT_NEAR(lit.diffuse * lit.color.x, 1.0f, 1e-6f);
+    EXPECT_NEAR(lit.diffuse * lit.color.y, 0.4f, 1e-6f);
+    EXPECT_NEAR(lit.diffuse * lit.color.z, 0.0f, 1e-6f);
+    // N·L = −1: t = 0, all cool, and not black.
+    const auto unlit = reflect_at(Reflection::Gooch, material, n, -n, n);
+    EXPECT_NEAR(unlit.diffuse * unlit.color.x, 0.2f, 1e-6f);
+    EXPECT_NEAR(unlit.diffuse * unlit.color.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(unlit.diffuse * unlit.color.z, 0.4f, 1e-6f);
+    EXPECT_EQ(unlit.specular, 0.0f);
+    // N·L = 0: t = 0.5, halfway: (0.6, 0.2, 0.2). Through shade() with a
+    // directional light of intensity 2: I = 2·(0.6, 0.2, 0.2).
+    Light light = directional_light({-1, 0, 0});
+    light.intensity = 2.0f;
+    material.ka = 0.0f;
+    const glm::vec3 color = shade_one(Reflection::Gooch, material, light, origin, n, {0, 5, 0});
+    EXPECT_NEAR(color.x, 1.2f, 1e-5f);
+    EXPECT_NEAR(color.y, 0.4f, 1e-5f);
+    EXPECT_NEAR(color.z, 0.4f, 1e-5f);
+}
+
+TEST(Gooch, OutsideASpotConeThereIsNoWash) {
+    // f = 0 outside the cone: the light adds nothing, not even the cool tone.
+    SpotLight kind;
+    kind.position = {0, 2, 0};
+    kind.direction = {1, 0, 0};  // points away from the surface point
+    kind.cutoff_degrees = 30.0f;
+    Light light;
+    light.kind = kind;
+    Material material;
+    material.ka = 0.0f;
+    const glm::vec3 color = shade_one(Reflection::Gooch, material, light, origin, up, {0, 5, 0});
+    EXPECT_EQ(color, glm::vec3(0.0f));
+}
+
+TEST(SpotPenumbra, SoftEdgeFollowsTheSmoothStep) {
+    // cutoff 30°, penumbra 0.5: θi = 15°. A point 20° off the axis:
+    // c = cos 20° = 0.939693, t = (c − cos 30°)/(cos 15° − cos 30°)
+    //   = (0.939693 − 0.866025)/(0.965926 − 0.866025) = 0.737413,
+    // w = t²(3 − 2t) = 0.543778·1.525174 = 0.829356. exponent 0, f = w·1/d²,
+    // d = 1, Lambert with N = L: I = w·k_d = 0.829356·0.7 = 0.580549.
+    SpotLight kind;
+    kind.position = {0, 1, 0};
+    kind.direction = {std::sin(glm::radians(20.0f)), -std::cos(glm::radians(20.0f)), 0};
+    kind.cutoff_degrees = 30.0f;
+    kind.penumbra = 0.5f;
+    Light light;
+    light.kind = kind;
+    Material material;
+    material.ka = 0.0f;
+    material.color = white;
+    const glm::vec3 color = shade_one(Reflection::Lambert, material, light, origin, up, {0, 5, 0});
+    EXPECT_NEAR(color.x, 0.580549f, 2e-5f);
+    // Inside the inner cone (10° off): w = 1, I = 0.7. Outside the outer cone (35°): 0.
+    kind.direction = {std::sin(glm::radians(10.0f)), -std::cos(glm::radians(10.0f)), 0};
+    light.kind = kind;
+    EXPECT_NEAR(shade_one(Reflection::Lambert, material, light, origin, up, {0, 5, 0}).x, 0.7f,
+                1e-6f);
+    kind.direction = {std::sin(glm::radians(35.0f)), -std::cos(glm::radians(35.0f)), 0};
+    light.kind = kind;
+    EXPECT_EQ(shade_one(Reflection::Lambert, material, light, origin, up, {0, 5, 0}).x, 0.0f);
+}
+
+TEST(SpotPenumbra, ZeroPenumbraIsTheHardEdgeExactly) {
+    // penumbra 0 and penumbra absent give the same bits, inside and on the cone.
+    SpotLight hard;
+    hard.position = {0, 1, 0};
+    hard.cutoff_degrees = 20.0f;
+    hard.exponent = 3.0f;
+    for (float degrees : {0.0f, 10.0f, 19.999f, 20.0f}) {
+        hard.direction = {std::sin(glm::radians(degrees)), -std::cos(glm::radians(degrees)), 0};
+        SpotLight explicit_zero = hard;
+        explicit_zero.penumbra = 0.0f;
+        Light a, b;
+        a.kind = hard;
+        b.kind = explicit_zero;
+        EXPECT_EQ(shade_one(Reflection::Phong, Material{}, a, origin, up, {0, 5, 0}),
+                  shade_one(Reflection::Phong, Material{}, b, origin, up, {0, 5, 0}));
+    }
+}
+
+TEST(ReflectionModels, OneListInTheSpecOrderWithUniqueNames) {
+    const auto models = litkit::reflection_models();
+    ASSERT_EQ(models.size(), static_cast<std::size_t>(litkit::reflection_count));
+    const char* expected[] = {"lambert",     "half-lambert", "phong",
+                              "blinn-phong", "oren-nayar",   "cook-torrance",
+                              "toon",        "minnaert",     "gooch"};
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        EXPECT_EQ(static_cast<std::size_t>(models[i].id), i);
+        EXPECT_EQ(models[i].name, expected[i]);
+        EXPECT_EQ(litkit::parse_reflection(models[i].name), models[i].id);
+        EXPECT_EQ(litkit::to_string(models[i].id), models[i].name);
+        EXPECT_FALSE(models[i].summary.empty());
     }
 }

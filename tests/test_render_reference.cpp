@@ -916,8 +916,12 @@ TEST(ReferenceRayCaster, CubeVertexNormalsArePillowedCorners) {
 // ---- The renderer against the reference ----
 
 constexpr std::array all_shapes{ShapeKind::Sphere, ShapeKind::Cube};
-constexpr std::array all_reflections{litkit::Reflection::Lambert, litkit::Reflection::HalfLambert,
-                                     litkit::Reflection::Phong, litkit::Reflection::BlinnPhong};
+// Every model of the family (docs/spec.md §4 and §9.1).
+constexpr std::array all_reflections{
+    litkit::Reflection::Lambert,      litkit::Reflection::HalfLambert, litkit::Reflection::Phong,
+    litkit::Reflection::BlinnPhong,   litkit::Reflection::OrenNayar,   litkit::Reflection::CookTorrance,
+    litkit::Reflection::Toon,         litkit::Reflection::Minnaert,    litkit::Reflection::Gooch};
+static_assert(all_reflections.size() == litkit::reflection_count);
 constexpr std::array all_shadings{litkit::Shading::Flat, litkit::Shading::Gouraud,
                                   litkit::Shading::Phong};
 
@@ -989,6 +993,17 @@ TEST_P(OtherLightsMatchReference, UnderSpotLightCrossingTheObject) {
     scene.lights[1] = {"spot", make_light(spot_across_object(), {255.0f, 255.0f, 255.0f}, 1.6f)};
     expect_render_matches_reference(scene,
                                     name_of(shape) + "_blinn_phong_" + name_of(shading) + "_spot");
+}
+
+// The same spot with a soft edge over the outer 60% of its cone (docs/spec.md §9.3).
+TEST_P(OtherLightsMatchReference, UnderSoftSpotLight) {
+    const auto [shape, shading] = GetParam();
+    litkit::Scene scene = make_scene(shape, litkit::Reflection::BlinnPhong, shading);
+    litkit::SpotLight spot = spot_across_object();
+    spot.penumbra = 0.6f;
+    scene.lights[1] = {"spot", make_light(spot, {255.0f, 255.0f, 255.0f}, 1.6f)};
+    expect_render_matches_reference(scene, name_of(shape) + "_blinn_phong_" + name_of(shading) +
+                                               "_soft_spot");
 }
 
 // All four kinds of light at once, with gamma 2.2 and a rolled camera.

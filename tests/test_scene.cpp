@@ -639,7 +639,8 @@ reflection = "blinn"
     EXPECT_EQ(diagnostics[0].location.column, 14u);
     EXPECT_EQ(diagnostics[0].message,
               "lighting: reflection \"Phong\" is not a reflection model (one of lambert, "
-              "half-lambert, phong, blinn-phong); did you mean 'phong'?");
+              "half-lambert, phong, blinn-phong, oren-nayar, cook-torrance, toon, minnaert, "
+              "gooch); did you mean 'phong'?");
     EXPECT_EQ(diagnostics[1].location.line, 9u);
     EXPECT_EQ(diagnostics[1].location.column, 11u);
     EXPECT_EQ(diagnostics[1].message,

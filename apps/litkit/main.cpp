@@ -71,8 +71,11 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->check(CLI::Range(1, 16384));
     command->add_option("--height", arguments.height, "Image height in pixels")
         ->check(CLI::Range(1, 16384));
+    std::vector<std::string> reflections;
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        reflections.emplace_back(model.name);
     command->add_option("--reflection", arguments.reflection, "Reflection model")
-        ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
+        ->check(CLI::IsMember(reflections));
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
     if (!rendering) return;

@@ -193,7 +193,11 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
         T m = max(dot(normal, to_eye), T(1e-4f));
         Vec3<T> halfway = normalize(to_light + to_eye);
         T n_dot_h = max(dot(normal, halfway), T(0));
-        T d_denominator = n_dot_h * n_dot_h * (a2 - T(1)) + T(1);
+        // n_h²·(a² − 1) + 1, summed as (1 − n_h²) + n_h²·a²: the same value, but
+        // exact at the peak (n_h = 1), where the spec's order loses most of a²
+        // to cancellation in float when the roughness is small.
+        T n_h2 = n_dot_h * n_dot_h;
+        T d_denominator = (T(1) - n_h2) + n_h2 * a2;
         T d_ggx = a2 / (T(pi) * (d_denominator * d_denominator));
         T vis = T(0.5f) / (n_dot_l * sqrt(m * m * (T(1) - a2) + a2) +
                            m * sqrt(n_dot_l * n_dot_l * (T(1) - a2) + a2));

@@ -21,10 +21,20 @@ constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "
                                                         "fov",      "near",    "far"};
 constexpr std::array<std::string_view, 2> lighting_keys{"reflection", "shading"};
 constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
-constexpr std::array<std::string_view, 5> material_keys{"color", "ka", "kd", "ks", "shininess"};
+// The material keys of docs/spec.md §5 and §9.1: every object takes them all,
+// whatever its reflection model, so that models can be switched freely.
+constexpr std::array<std::string_view, 10> material_keys{
+    "color", "ka", "kd", "ks", "shininess", "sigma", "roughness", "f0", "bands", "minnaert_k"};
 
-constexpr std::array<std::string_view, 4> reflection_names{"lambert", "half-lambert", "phong",
-                                                           "blinn-phong"};
+// The reflection models' names, from the family's one list (lighting.hpp).
+std::span<const std::string_view> reflection_names() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> all;
+        for (const ReflectionModel& model : reflection_models()) all.push_back(model.name);
+        return all;
+    }();
+    return names;
+}
 constexpr std::array<std::string_view, 3> shading_names{"flat", "gouraud", "phong"};
 
 const Family& light_family() {
@@ -35,7 +45,7 @@ const Family& light_family() {
             {"ambient", {}},
             {"directional", {"direction"}},
             {"point", {"position", "attenuation"}},
-            {"spot", {"position", "attenuation", "direction", "cutoff", "exponent"}},
+            {"spot", {"position", "attenuation", "direction", "cutoff", "exponent", "penumbra"}},
         }};
     return family;
 }
@@ -145,7 +155,7 @@ void SceneReader::read_observer(const Site& site) {
 
 void SceneReader::read_lighting(const Site& site) {
     check_keys(site, lighting_keys);
-    scene_.reflection = read_enum<Reflection>(site, "reflection", reflection_names,
+    scene_.reflection = read_enum<Reflection>(site, "reflection", reflection_names(),
                                               "reflection model", parse_reflection);
     scene_.shading = read_enum<Shading>(site, "shading", shading_names, "shading model",
                                         parse_shading);
@@ -246,6 +256,7 @@ void SceneReader::read_light(const Site& site) {
         if (auto direction = read_vec3(site, "direction")) spot.direction = *direction;
         if (auto cutoff = read_number(site, "cutoff")) spot.cutoff_degrees = *cutoff;
         if (auto exponent = read_number(site, "exponent")) spot.exponent = *exponent;
+        if (auto penumbra = read_number(site, "penumbra")) spot.penumbra = *penumbra;
         light.light.kind = spot;
     }
 }
@@ -260,7 +271,7 @@ void SceneReader::read_object(const Site& site) {
     if (auto position = read_vec3(site, "position")) object.position = *position;
     if (auto rotation = read_vec3(site, "rotation")) object.rotation_degrees = *rotation;
     if (auto scale = read_number(site, "scale")) object.scale = *scale;
-    object.reflection = read_enum<Reflection>(site, "reflection", reflection_names,
+    object.reflection = read_enum<Reflection>(site, "reflection", reflection_names(),
                                               "reflection model", parse_reflection);
     object.shading =
         read_enum<Shading>(site, "shading", shading_names, "shading model", parse_shading);
@@ -318,6 +329,11 @@ void SceneReader::read_material(const Site& object_site, Material& material) {
     if (auto kd = read_number(site, "kd")) material.kd = *kd;
     if (auto ks = read_number(site, "ks")) material.ks = *ks;
     if (auto shininess = read_number(site, "shininess")) material.shininess = *shininess;
+    if (auto sigma = read_number(site, "sigma")) material.sigma_degrees = *sigma;
+    if (auto roughness = read_number(site, "roughness")) material.roughness = *roughness;
+    if (auto f0 = read_number(site, "f0")) material.f0 = *f0;
+    if (auto bands = read_integer(site, "bands")) material.bands = *bands;
+    if (auto k = read_number(site, "minnaert_k")) material.minnaert_k = *k;
 }
 
 }  // namespace litkit::detail

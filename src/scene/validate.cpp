@@ -223,6 +223,7 @@ private:
                       "cutoff must be in (0, 90] degrees, found " +
                           number_text(spot->cutoff_degrees));
             at_least(spot->exponent, 0.0f, true, base + ".exponent", who, "exponent");
+            in_range(spot->penumbra, 0.0f, 1.0f, base + ".penumbra", who, "penumbra");
         }
         if (const glm::vec3* position = light_position(light); position && usable(base)) {
             if (room_ok_ && !inside_room(*position))
@@ -256,6 +257,13 @@ private:
         in_range(m.kd, 0.0f, 1.0f, base + ".material.kd", who, "material.kd");
         in_range(m.ks, 0.0f, 1.0f, base + ".material.ks", who, "material.ks");
         at_least(m.shininess, 0.0f, true, base + ".material.shininess", who, "material.shininess");
+        // docs/spec.md §9.1: checked whatever the object's model.
+        in_range(m.sigma_degrees, 0.0f, 90.0f, base + ".material.sigma", who, "material.sigma");
+        in_range(m.roughness, 0.0f, 1.0f, base + ".material.roughness", who, "material.roughness");
+        in_range(m.f0, 0.0f, 1.0f, base + ".material.f0", who, "material.f0");
+        integer_in(m.bands, 2, 16, base + ".material.bands", who, "material.bands");
+        in_range(m.minnaert_k, 0.0f, 4.0f, base + ".material.minnaert_k", who,
+                 "material.minnaert_k");
 
         struct ShapeCheck {
             Validator& v;

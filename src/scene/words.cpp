@@ -41,21 +41,32 @@ std::optional<std::string_view> closest_word(std::string_view word,
             best_distance = distance;
         }
     }
+    if (best && best_distance == 0) return best;  // only the case differs
+
+    // The unique candidate the word begins ("blinn" → "blinn-phong", "cook"
+    // → "cook-torrance", even where another name is a small edit away), or
+    // the unique one it starts with ("spotlight" → "spot").
+    const auto unique_match = [&](auto matches) -> std::optional<std::string_view> {
+        std::optional<std::string_view> found;
+        int count = 0;
+        for (std::string_view candidate : candidates) {
+            if (folded.size() >= 3 && matches(candidate)) {
+                found = candidate;
+                ++count;
+            }
+        }
+        return count == 1 ? found : std::nullopt;
+    };
+    if (auto completion = unique_match(
+            [&](std::string_view candidate) { return candidate.starts_with(folded); }))
+        return completion;
+
     const std::size_t allowed = folded.size() <= 3 ? 1 : 2;
     if (best && best_distance <= allowed && best_distance < folded.size()) return best;
 
-    std::optional<std::string_view> prefix_match;
-    int prefix_matches = 0;
-    for (std::string_view candidate : candidates) {
-        // "blinn" → "blinn-phong", and "spotlight" → "spot".
-        if (folded.size() >= 3 && (candidate.starts_with(folded) ||
-                                   (candidate.size() >= 3 && folded.starts_with(candidate)))) {
-            prefix_match = candidate;
-            ++prefix_matches;
-        }
-    }
-    if (prefix_matches == 1) return prefix_match;
-    return std::nullopt;
+    return unique_match([&](std::string_view candidate) {
+        return candidate.size() >= 3 && std::string_view(folded).starts_with(candidate);
+    });
 }
 
 std::string did_you_mean(std::string_view word, std::span<const std::string_view> candidates) {
