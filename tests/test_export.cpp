@@ -115,6 +115,81 @@ shading = "gouraud"
 material = { color = [230, 200, 90], ks = 0.8, shininess = 16 }
 )toml";
 
+// The models of docs/spec.md §9.1, one object each under every shading, and a
+// spot with a soft edge (§9.3) crossing them.
+constexpr const char* family_scene = R"toml(
+[room]
+width = 12
+height = 8
+depth = 16
+
+[observer]
+position = [0, 1, 8]
+
+[lighting]
+reflection = "oren-nayar"
+shading = "phong"
+
+[output]
+width = 320
+height = 240
+background = [30, 40, 60]
+
+[[lights]]
+type = "ambient"
+intensity = 0.2
+
+[[lights]]
+type = "directional"
+direction = [-1, -1, -0.5]
+
+[[lights]]
+type = "spot"
+position = [0, 3, 2]
+direction = [0.2, -1, -0.6]
+cutoff = 35
+penumbra = 0.7
+
+[[objects]]
+type = "sphere"
+position = [-3, 1, 0]
+segments = 32
+rings = 16
+material = { color = [200, 150, 110], sigma = 40 }
+
+[[objects]]
+type = "sphere"
+position = [0, 1, 0]
+segments = 32
+rings = 16
+reflection = "cook-torrance"
+shading = "gouraud"
+material = { color = [190, 160, 60], ks = 1, roughness = 0.3, f0 = 0.5 }
+
+[[objects]]
+type = "sphere"
+position = [3, 1, 0]
+segments = 32
+rings = 16
+reflection = "toon"
+material = { color = [80, 160, 220], bands = 4 }
+
+[[objects]]
+type = "torus"
+position = [-1.6, -1.6, 0]
+rotation = [60, 0, 0]
+reflection = "minnaert"
+shading = "flat"
+material = { color = [200, 200, 210], minnaert_k = 0.6 }
+
+[[objects]]
+type = "teapot"
+size = 1.5
+position = [1.6, -2, 0]
+reflection = "gooch"
+material = { color = [220, 90, 70], ka = 0 }
+)toml";
+
 class Export : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -123,6 +198,7 @@ protected:
         fs::remove_all(dir);
         fs::create_directories(dir);
         std::ofstream(dir / "mixed.toml") << mixed_scene;
+        std::ofstream(dir / "family.toml") << family_scene;
     }
     void TearDown() override { fs::remove_all(dir); }
 
@@ -177,6 +253,29 @@ TEST_F(Export, GlslTheValidatorRejectsABrokenShader) {
     text.insert(main_at, "float broken = undefined_name;\n");
     std::ofstream(frag) << text;
     EXPECT_NE(run("'" + validator + "' " + quoted(frag)).status, 0);
+}
+
+TEST_F(Export, CppProgramOfTheNewModelsDrawsWhatLitkitDraws) {
+    const Outcome exported = cli("export --format cpp family.toml -o program");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
+                                  quoted(dir / "program" / "build") +
+                                  " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
+    ASSERT_EQ(configure.status, 0) << configure.output;
+    const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
+    ASSERT_EQ(build.status, 0) << build.output;
+    const Outcome drawn = run("cd " + quoted(dir) + " && program/build/family -o exported.png");
+    ASSERT_EQ(drawn.status, 0) << drawn.output;
+    ASSERT_EQ(cli("render family.toml --backend gl -o gl.png").status, 0);
+    ASSERT_EQ(cli("render family.toml -o cpu.png").status, 0);
+    const litkit::Image exported_png = litkit::read_png(dir / "exported.png");
+    EXPECT_EQ(exported_png.rgb, litkit::read_png(dir / "gl.png").rgb);
+    const fs::path scene_file = dir / "family.toml";
+    const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
+    const litkit_test::Agreement a = litkit_test::agreement(
+        exported_png, litkit::read_png(dir / "cpu.png"), litkit_test::labels(scene));
+    EXPECT_GT(a.counted, 320u * 240u / 10);
+    EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
 }
 
 TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
