@@ -661,7 +661,7 @@ TEST_P(GlslNumericReflection, ReflectionTerms) {
         source.color = {inputs.uniform(0, 1), inputs.uniform(0, 1), inputs.uniform(0, 1)};
         source.kd = inputs.uniform(0, 1);
         source.shininess = shininess;
-        source.sigma_degrees = inputs.sometimes_zero(inputs.uniform(0, 90));
+        source.sigma = inputs.sometimes_zero(inputs.uniform(0, 90));
         source.roughness = inputs.sometimes_zero(inputs.uniform(0, 1));
         source.f0 = inputs.uniform(0, 1);
         source.bands = 2 + static_cast<int>(inputs.uniform(0, 14.99f));

@@ -1048,7 +1048,7 @@ TEST(OrenNayar, ThirtyDegreeSigmaGivesTheClosedFormTerms) {
     // Opposite sides: L·V = cos 120° = −0.5, s = −0.75 → 0: D = 0.5·A = 0.386555.
     Material material;
     material.kd = 1.0f;
-    material.sigma_degrees = 30.0f;
+    material.sigma = 30.0f;
     const auto same =
         reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(60));
     EXPECT_NEAR(same.diffuse, 0.640648f, 1e-5f);
@@ -1057,7 +1057,7 @@ TEST(OrenNayar, ThirtyDegreeSigmaGivesTheClosedFormTerms) {
         reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(-60));
     EXPECT_NEAR(opposite.diffuse, 0.386555f, 1e-5f);
     // σ = 0: A = 1, B = 0, Lambert.
-    material.sigma_degrees = 0.0f;
+    material.sigma = 0.0f;
     const auto smooth =
         reflect_at(Reflection::OrenNayar, material, {0, 1, 0}, at_angle(60), at_angle(-20));
     EXPECT_NEAR(smooth.diffuse, 0.5f, 1e-6f);

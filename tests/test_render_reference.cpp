@@ -206,7 +206,7 @@ struct RefMaterial {
 
 RefMaterial to_reference(const litkit::Material& material) {
     return {to_double(material.color),  double(material.ka),        double(material.kd),
-            double(material.ks),        double(material.shininess), double(material.sigma_degrees),
+            double(material.ks),        double(material.shininess), double(material.sigma),
             double(material.roughness), double(material.f0),        double(material.bands),
             double(material.minnaert_k)};
 }

@@ -45,11 +45,11 @@ struct Material {
     float kd;
     float ks;
     float shininess;
-    float sigma;       // oren-nayar, radians
-    float roughness;   // cook-torrance
-    float f0;          // cook-torrance
-    float bands;       // toon (a whole number)
-    float minnaert_k;  // minnaert
+    float sigma;
+    float roughness;
+    float f0;
+    float bands;
+    float minnaert_k;
 };
 
 struct Light {

@@ -72,26 +72,20 @@ Vec3<T> normalize(const Vec3<T>& a) {
 }
 
 // Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d,
-// k_s, α, and the parameters of §9.1; σ in radians).
+// k_s, α, and the parameters of §9.1, named as in Material so that
+// for_each_model_parameter visits both).
 template <class T>
 struct MaterialT {
     Vec3<T> color;
     T ka, kd, ks, shininess;
-    T sigma, roughness, f0, bands, minnaert_k;
+    T sigma{}, roughness{}, f0{}, bands{}, minnaert_k{};
 };
-inline constexpr double degrees_to_radians = 3.14159265358979323846 / 180.0;
 template <class T>
 MaterialT<T> splat(const Material& m) {
-    return {splat<T>(m.color),
-            T(m.ka),
-            T(m.kd),
-            T(m.ks),
-            T(m.shininess),
-            T(static_cast<float>(m.sigma_degrees * degrees_to_radians)),
-            T(m.roughness),
-            T(m.f0),
-            T(static_cast<float>(m.bands)),
-            T(m.minnaert_k)};
+    MaterialT<T> result{splat<T>(m.color), T(m.ka), T(m.kd), T(m.ks), T(m.shininess)};
+    for_each_model_parameter([](const ModelParameter&, T& to, const float& from) { to = T(from); },
+                             result, m);
+    return result;
 }
 
 // ---- Light directions and factors (docs/spec.md §4, first table) ----
@@ -176,7 +170,8 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
         return {max(n_dot_l, T(0)), lit(specular)};
     } else if constexpr (R == Reflection::OrenNayar) {
         // D = n_l·(A + B·max(0, s)/t), s = L·V − n_l·n_v, t = max(n_l, n_v).
-        T sigma2 = material.sigma * material.sigma;
+        T sigma = material.sigma * T(0.0174532925f);  // σ in radians
+        T sigma2 = sigma * sigma;
         T a = T(1) - T(0.5f) * sigma2 / (sigma2 + T(0.33f));
         T b = T(0.45f) * sigma2 / (sigma2 + T(0.09f));
         T n_dot_v = max(dot(normal, to_eye), T(0));

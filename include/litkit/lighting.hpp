@@ -62,12 +62,36 @@ struct Material {
     float kd = 0.7f;
     float ks = 0.5f;
     float shininess = 32.0f;
-    float sigma_degrees = 30.0f;  // oren-nayar: surface roughness σ, 0–90°
-    float roughness = 0.5f;       // cook-torrance: perceptual roughness r, 0–1
-    float f0 = 0.04f;             // cook-torrance: reflectance at normal incidence, 0–1
-    int bands = 3;                // toon: diffuse levels, 2–16
-    float minnaert_k = 1.5f;      // minnaert: limb darkening k, 0–4
+    float sigma = 30.0f;       // oren-nayar: surface roughness σ in degrees
+    float roughness = 0.5f;    // cook-torrance: perceptual roughness r
+    float f0 = 0.04f;          // cook-torrance: reflectance at normal incidence
+    float bands = 3.0f;        // toon: how many diffuse levels (a whole number)
+    float minnaert_k = 1.5f;   // minnaert: limb darkening k
 };
+
+// One parameter of the models of docs/spec.md §9.1 as scene files name and
+// bound it: its key (also its name in the generated GLSL), its closed range,
+// and whether it is a whole number.
+struct ModelParameter {
+    std::string_view key;
+    float low;
+    float high;
+    bool whole;
+};
+
+// The one list of those parameters: calls f(parameter, field...) for each,
+// with that field of every material given (Material and
+// equations::MaterialT<T> name their fields alike). The scene reader,
+// validation, the OpenGL upload and the code generators all follow it, so a
+// model's new parameter is a field of Material and MaterialT and a line here.
+template <class F, class... Materials>
+void for_each_model_parameter(F&& f, Materials&&... materials) {
+    f(ModelParameter{"sigma", 0.0f, 90.0f, false}, materials.sigma...);
+    f(ModelParameter{"roughness", 0.0f, 1.0f, false}, materials.roughness...);
+    f(ModelParameter{"f0", 0.0f, 1.0f, false}, materials.f0...);
+    f(ModelParameter{"bands", 2.0f, 16.0f, true}, materials.bands...);
+    f(ModelParameter{"minnaert_k", 0.0f, 4.0f, false}, materials.minnaert_k...);
+}
 
 // Light kinds: a closed set behind one variant (docs/spec.md §4 table).
 struct AmbientLight {};

@@ -245,17 +245,21 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
         }
         out.arrays += "\n";
 
-        const equations::MaterialT<float> m = equations::splat<float>(object.material);
+        const Material& m = object.material;
+        std::string parameters;
+        for_each_model_parameter(
+            [&](const ModelParameter& parameter, const float& value) {
+                parameters += std::string(parameters.empty() ? "" : ", ") + "{\"" +
+                              std::string(parameter.key) + "\", " + float_literal(value) + "}";
+            },
+            m);
         out.objects += "    {.name = \"" + label + "\",\n     .program = " +
                        std::to_string(models.program[i]) + ",  // " + pair_file_stem(pair) +
-                       "\n     .material = {.color = " + vec3_braces(object.material.color) +
-                       ", .ka = " + float_literal(m.ka) + ", .kd = " + float_literal(m.kd) +
-                       ", .ks = " + float_literal(m.ks) + ", .shininess = " +
-                       float_literal(m.shininess) + ",\n                  .sigma = " +
-                       float_literal(m.sigma) + ", .roughness = " + float_literal(m.roughness) +
-                       ", .f0 = " + float_literal(m.f0) + ", .bands = " + float_literal(m.bands) +
-                       ", .minnaert_k = " + float_literal(m.minnaert_k) +
-                       "},\n     .vertices = " + id +
+                       "\n     .material = {.color = " + vec3_braces(m.color) + ", .ka = " +
+                       float_literal(m.ka) + ", .kd = " + float_literal(m.kd) + ", .ks = " +
+                       float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
+                       ",\n                  .parameters = {" + parameters +
+                       "}},\n     .vertices = " + id +
                        "_vertices,\n     .vertex_floats = std::size(" + id + "_vertices)";
         if (!flat) {
             out.objects += ",\n     .indices = " + id + "_indices,\n     .index_count = std::size(" +

@@ -255,6 +255,17 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "//   1/255 (exact in RGBA8), alpha 1\n";
 }
 
+// The Material struct's fields for the parameters of docs/spec.md §9.1.
+std::string material_parameter_fields() {
+    std::string fields;
+    for_each_model_parameter(
+        [&](const ModelParameter& parameter, const float&) {
+            fields += "    float " + std::string(parameter.key) + ";\n";
+        },
+        Material{});
+    return fields;
+}
+
 std::string lighting_declarations(Reflection reflection, int light_capacity) {
     std::string text =
         "\n"
@@ -269,12 +280,8 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         "    float ka;\n"
         "    float kd;\n"
         "    float ks;\n"
-        "    float shininess;\n"
-        "    float sigma;       // oren-nayar, radians\n"
-        "    float roughness;   // cook-torrance\n"
-        "    float f0;          // cook-torrance\n"
-        "    float bands;       // toon (a whole number)\n"
-        "    float minnaert_k;  // minnaert\n"
+        "    float shininess;\n" +
+        material_parameter_fields() +
         "};\n"
         "\n"
         "struct Light {\n"

@@ -106,11 +106,16 @@ equations::Vec3<Expr> vec3_variable(const std::string& name) {
 }
 
 equations::MaterialT<Expr> material_variable(const std::string& name) {
-    return {vec3_variable(name + ".color"),         Expr::variable(name + ".ka"),
-            Expr::variable(name + ".kd"),           Expr::variable(name + ".ks"),
-            Expr::variable(name + ".shininess"),    Expr::variable(name + ".sigma"),
-            Expr::variable(name + ".roughness"),    Expr::variable(name + ".f0"),
-            Expr::variable(name + ".bands"),        Expr::variable(name + ".minnaert_k")};
+    equations::MaterialT<Expr> material{vec3_variable(name + ".color"),
+                                        Expr::variable(name + ".ka"), Expr::variable(name + ".kd"),
+                                        Expr::variable(name + ".ks"),
+                                        Expr::variable(name + ".shininess")};
+    for_each_model_parameter(
+        [&](const ModelParameter& parameter, Expr& field) {
+            field = Expr::variable(name + "." + std::string(parameter.key));
+        },
+        material);
+    return material;
 }
 
 // ---- Printing ----

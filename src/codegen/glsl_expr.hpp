@@ -60,6 +60,7 @@ class Expr {
 public:
     // A float literal; T(1), T(0.5f) in the templates.
     explicit Expr(float value);
+    Expr() : Expr(0.0f) {}  // 0, so that aggregates of Expr can be declared
     explicit Expr(NodePtr node) : node_(std::move(node)) {}
     // A named GLSL input, e.g. Expr::variable("p.x").
     static Expr variable(std::string name);

@@ -52,10 +52,14 @@ core::LightData light_data(const equations::PreparedLight& light) {
 }
 
 core::MaterialData material_data(const Material& material) {
-    // The values every other path uses, converted as they are (σ to radians).
-    const equations::MaterialT<float> m = equations::splat<float>(material);
-    return {material.color, m.ka,    m.kd,        m.ks,   m.shininess,
-            m.sigma,        m.roughness, m.f0,    m.bands, m.minnaert_k};
+    core::MaterialData data{material.color, material.ka, material.kd, material.ks,
+                            material.shininess, {}};
+    for_each_model_parameter(
+        [&](const ModelParameter& parameter, const float& value) {
+            data.parameters.emplace_back(parameter.key, value);
+        },
+        material);
+    return data;
 }
 
 // Every light is a uniform struct of about 24 components (vec3s padded to

@@ -21,10 +21,19 @@ constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "
                                                         "fov",      "near",    "far"};
 constexpr std::array<std::string_view, 2> lighting_keys{"reflection", "shading"};
 constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
-// The material keys of docs/spec.md §5 and §9.1: every object takes them all,
-// whatever its reflection model, so that models can be switched freely.
-constexpr std::array<std::string_view, 10> material_keys{
-    "color", "ka", "kd", "ks", "shininess", "sigma", "roughness", "f0", "bands", "minnaert_k"};
+// The material keys of docs/spec.md §5 and the parameters of §9.1: every
+// object takes them all, whatever its reflection model, so that models can be
+// switched freely.
+std::span<const std::string_view> material_keys() {
+    static const std::vector<std::string_view> keys = [] {
+        std::vector<std::string_view> all{"color", "ka", "kd", "ks", "shininess"};
+        for_each_model_parameter(
+            [&](const ModelParameter& parameter, const float&) { all.push_back(parameter.key); },
+            Material{});
+        return all;
+    }();
+    return keys;
+}
 
 // The reflection models' names, from the family's one list (lighting.hpp).
 std::span<const std::string_view> reflection_names() {
@@ -323,17 +332,21 @@ void SceneReader::read_material(const Site& object_site, Material& material) {
     const toml::table* table = as_table(*node, object_site, "material");
     if (!table) return;
     const Site site{*table, object_site.path + ".material", object_site.subject, "material."};
-    check_keys(site, material_keys);
+    check_keys(site, material_keys());
     if (auto color = read_color(site, "color")) material.color = unit_color(*color);
     if (auto ka = read_number(site, "ka")) material.ka = *ka;
     if (auto kd = read_number(site, "kd")) material.kd = *kd;
     if (auto ks = read_number(site, "ks")) material.ks = *ks;
     if (auto shininess = read_number(site, "shininess")) material.shininess = *shininess;
-    if (auto sigma = read_number(site, "sigma")) material.sigma_degrees = *sigma;
-    if (auto roughness = read_number(site, "roughness")) material.roughness = *roughness;
-    if (auto f0 = read_number(site, "f0")) material.f0 = *f0;
-    if (auto bands = read_integer(site, "bands")) material.bands = *bands;
-    if (auto k = read_number(site, "minnaert_k")) material.minnaert_k = *k;
+    for_each_model_parameter(
+        [&](const ModelParameter& parameter, float& value) {
+            if (parameter.whole) {
+                if (auto whole = read_integer(site, parameter.key)) value = static_cast<float>(*whole);
+            } else if (auto number = read_number(site, parameter.key)) {
+                value = *number;
+            }
+        },
+        material);
 }
 
 }  // namespace litkit::detail

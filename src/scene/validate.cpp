@@ -258,12 +258,19 @@ private:
         in_range(m.ks, 0.0f, 1.0f, base + ".material.ks", who, "material.ks");
         at_least(m.shininess, 0.0f, true, base + ".material.shininess", who, "material.shininess");
         // docs/spec.md §9.1: checked whatever the object's model.
-        in_range(m.sigma_degrees, 0.0f, 90.0f, base + ".material.sigma", who, "material.sigma");
-        in_range(m.roughness, 0.0f, 1.0f, base + ".material.roughness", who, "material.roughness");
-        in_range(m.f0, 0.0f, 1.0f, base + ".material.f0", who, "material.f0");
-        integer_in(m.bands, 2, 16, base + ".material.bands", who, "material.bands");
-        in_range(m.minnaert_k, 0.0f, 4.0f, base + ".material.minnaert_k", who,
-                 "material.minnaert_k");
+        for_each_model_parameter(
+            [&](const ModelParameter& parameter, const float& value) {
+                const std::string key = "material." + std::string(parameter.key);
+                if (!parameter.whole) {
+                    in_range(value, parameter.low, parameter.high, base + "." + key, who, key);
+                } else if (!(value >= parameter.low && value <= parameter.high &&
+                             value == std::floor(value))) {
+                    error(base + "." + key, who,
+                          key + " must be a whole number " + number_text(parameter.low) + "–" +
+                              number_text(parameter.high) + ", found " + number_text(value));
+                }
+            },
+            m);
 
         struct ShapeCheck {
             Validator& v;
