@@ -1220,3 +1220,80 @@ TEST(ReflectionModels, OneListInTheSpecOrderWithUniqueNames) {
         EXPECT_FALSE(models[i].summary.empty());
     }
 }
+
+namespace {
+
+float intermediate(const litkit::LightTerms& terms, const std::string& name) {
+    for (const auto& [key, value] : terms.intermediates)
+        if (key == name) return value;
+    ADD_FAILURE() << "no intermediate " << name;
+    return std::numeric_limits<float>::quiet_NaN();
+}
+
+}  // namespace
+
+TEST(ShadeTerms, TotalIsShadeBitForBitForEveryModelAndLightKind) {
+    std::vector<Light> lights{Light{AmbientLight{}, white, 0.3f}, directional_light({-1, -2, -1}),
+                              point_light({1, 2, 1})};
+    SpotLight spot;
+    spot.position = {0.5f, 2, 0};
+    spot.direction = {-0.2f, -1, 0};
+    spot.cutoff_degrees = 40.0f;
+    spot.exponent = 2.0f;
+    spot.penumbra = 0.5f;
+    lights.push_back(Light{spot, white, 2.0f});
+    const glm::vec3 normal = glm::vec3(0.3f, 0.9f, 0.1f) / std::sqrt(0.91f);
+    for (const litkit::ReflectionModel& model : litkit::reflection_models()) {
+        const litkit::ShadeTerms terms =
+            litkit::shade_terms(model.id, Material{}, lights, origin, normal, {1, 3, 4});
+        const glm::vec3 shaded =
+            litkit::shade(model.id, Material{}, lights, origin, normal, {1, 3, 4});
+        EXPECT_EQ(terms.total, shaded) << model.name;
+        ASSERT_EQ(terms.lights.size(), lights.size()) << model.name;
+        EXPECT_TRUE(terms.lights[0].ambient);
+        glm::vec3 sum{0.0f};
+        for (const litkit::LightTerms& light : terms.lights) sum += light.contribution;
+        EXPECT_NEAR(sum.x, shaded.x, 1e-6f) << model.name;
+        EXPECT_NEAR(sum.z, shaded.z, 1e-6f) << model.name;
+    }
+}
+
+TEST(ShadeTerms, ShowTheModelsIntermediateValues) {
+    const glm::vec3 n{0, 1, 0};
+    Material material;
+    material.sigma = 30.0f;
+    material.roughness = 0.5f;
+    material.f0 = 0.04f;
+    // A directional light straight down onto N, eye straight above: L = V = N.
+    const Light from_above = directional_light({0, -1, 0});
+    const auto terms_of = [&](Reflection reflection, const Light& light, const glm::vec3& eye) {
+        return litkit::shade_terms(reflection, material, std::span<const Light>(&light, 1), origin,
+                                   n, eye)
+            .lights.at(0);
+    };
+    const litkit::LightTerms oren = terms_of(Reflection::OrenNayar, from_above, {0, 5, 0});
+    EXPECT_NEAR(intermediate(oren, "A"), 0.773109f, 1e-5f);
+    EXPECT_NEAR(intermediate(oren, "B"), 0.338792f, 1e-5f);
+    const litkit::LightTerms cook = terms_of(Reflection::CookTorrance, from_above, {0, 5, 0});
+    EXPECT_NEAR(intermediate(cook, "D_GGX"), 16.0f / 3.14159265f, 1e-4f);  // 5.0930
+    EXPECT_NEAR(intermediate(cook, "Vis"), 0.25f, 1e-6f);
+    EXPECT_NEAR(intermediate(cook, "F"), 0.04f, 1e-6f);
+    EXPECT_NEAR(cook.specular, 0.16f, 1e-5f);
+    EXPECT_EQ(cook.factor, 1.0f);
+    EXPECT_EQ(cook.to_light, n);
+    // Toon, 3 bands, N·L = 0.5: band ⌊1.5⌋ = 1.
+    const litkit::LightTerms toon =
+        terms_of(Reflection::Toon, directional_light(-at_angle(60)), {0, 5, 0});
+    EXPECT_EQ(intermediate(toon, "band"), 1.0f);
+    // Gooch, C = (1, 0, 0), k_d = 1: cool (0.2, 0, 0.4), warm (1, 0.4, 0); N·L = 1: t = 1.
+    material.color = {1, 0, 0};
+    material.kd = 1.0f;
+    const litkit::LightTerms gooch = terms_of(Reflection::Gooch, from_above, {0, 5, 0});
+    EXPECT_EQ(intermediate(gooch, "t"), 1.0f);
+    EXPECT_NEAR(intermediate(gooch, "cool.r"), 0.2f, 1e-6f);
+    EXPECT_NEAR(intermediate(gooch, "cool.b"), 0.4f, 1e-6f);
+    EXPECT_NEAR(intermediate(gooch, "warm.r"), 1.0f, 1e-6f);
+    EXPECT_NEAR(intermediate(gooch, "warm.g"), 0.4f, 1e-6f);
+    // The classic models have none.
+    EXPECT_TRUE(terms_of(Reflection::Phong, from_above, {0, 5, 0}).intermediates.empty());
+}

@@ -148,11 +148,22 @@ T specular_power(const T& base, const T& shininess) {
     return select(base > T(0), pow(max(base, T(0)), shininess), T(0));
 }
 
+// Where a model's named intermediate values go (A and B of Oren–Nayar, D_GGX,
+// Vis and F of Cook–Torrance, ...): nowhere by default, at no cost; a caller
+// that wants to show the arithmetic (litkit::shade_terms) passes a recorder.
+struct NoTrace {
+    template <class T>
+    void operator()(const char*, const T&) const {}
+    // shade_point also reports each light's part (litkit::shade_terms).
+    template <class... Parts>
+    void light(const Parts&...) const {}
+};
+
 // D and S for a model of the diffuse + specular form at unit normal N, unit
 // L, unit V (docs/spec.md §4, second table, and §9.1).
-template <Reflection R, class T>
+template <Reflection R, class T, class Trace = NoTrace>
 Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
-                          const MaterialT<T>& material) {
+                          const MaterialT<T>& material, const Trace& trace = {}) {
     T n_dot_l = dot(normal, to_light);
     const auto lit = [&](const T& value) { return select(n_dot_l > T(0), value, T(0)); };
     if constexpr (R == Reflection::Lambert) {
@@ -178,6 +189,10 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
         T s = dot(to_light, to_eye) - n_dot_l * n_dot_v;
         T t = max(n_dot_l, n_dot_v);
         T ratio = max(T(0), s) / select(t > T(0), t, T(1));
+        trace("A", a);
+        trace("B", b);
+        trace("s", s);
+        trace("t", t);
         return {lit(n_dot_l * (a + b * ratio)), T(0)};
     } else if constexpr (R == Reflection::CookTorrance) {
         // D = n_l; S = π·D_GGX·Vis·F·n_l (GGX, height-correlated Smith, Schlick).
@@ -200,6 +215,9 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
         T fifth = one_minus_v_dot_h * one_minus_v_dot_h;
         fifth = fifth * fifth * one_minus_v_dot_h;
         T fresnel = material.f0 + (T(1) - material.f0) * fifth;
+        trace("D_GGX", d_ggx);
+        trace("Vis", vis);
+        trace("F", fresnel);
         return {max(n_dot_l, T(0)), lit(T(pi) * d_ggx * vis * fresnel * n_dot_l)};
     } else if constexpr (R == Reflection::Toon) {
         // D = min(⌊bands·n_l⌋, bands − 1)/(bands − 1); S = 1 where n_h^α ≥ 0.5.
@@ -207,6 +225,7 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
         Vec3<T> halfway = normalize(to_light + to_eye);
         T n_dot_h = max(dot(normal, halfway), T(0));
         T highlight = select(pow(n_dot_h, material.shininess) >= T(0.5f), T(1), T(0));
+        trace("band", level);
         return {lit(level / (material.bands - T(1))), lit(highlight)};
     } else {
         static_assert(R == Reflection::Minnaert);
@@ -231,10 +250,10 @@ struct Reflected {
 // The reflection of model R: k_d·D·C and S for the diffuse + specular
 // models; for `gooch` (docs/spec.md §9.1) the cool-to-warm wash
 // t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
-template <Reflection R, class T>
+template <Reflection R, class T, class Trace = NoTrace>
 Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
-                     const MaterialT<T>& material) {
-    Terms<T> terms = reflection_terms<R>(normal, to_light, to_eye, material);
+                     const MaterialT<T>& material, const Trace& trace = {}) {
+    Terms<T> terms = reflection_terms<R>(normal, to_light, to_eye, material, trace);
     if constexpr (R == Reflection::Gooch) {
         T t = (T(1) + dot(normal, to_light)) * T(0.5f);
         Vec3<T> tinted = material.kd * material.color;
@@ -242,6 +261,13 @@ Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<
                      min(T(0.2f) * tinted.z + T(0.4f), T(1))};
         Vec3<T> warm{min(T(0.6f) * tinted.x + T(0.4f), T(1)),
                      min(T(0.6f) * tinted.y + T(0.4f), T(1)), min(T(0.6f) * tinted.z, T(1))};
+        trace("t", t);
+        trace("cool.r", cool.x);
+        trace("cool.g", cool.y);
+        trace("cool.b", cool.z);
+        trace("warm.r", warm.x);
+        trace("warm.g", warm.y);
+        trace("warm.b", warm.z);
         return {T(1), t * warm + (T(1) - t) * cool, terms.specular};
     } else {
         return {material.kd * terms.diffuse, material.color, terms.specular};
@@ -309,17 +335,21 @@ glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lig
 
 // I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S) at point p with
 // unit normal N and unit V (docs/spec.md §4). Unclamped.
-template <Reflection R, class T>
+template <Reflection R, class T, class Trace = NoTrace>
 Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& material,
-                    const Vec3<T>& p, const Vec3<T>& normal, const Vec3<T>& to_eye) {
+                    const Vec3<T>& p, const Vec3<T>& normal, const Vec3<T>& to_eye,
+                    const Trace& trace = {}) {
     Vec3<T> total{T(0), T(0), T(0)};
     for (const PreparedLight& light : lights) {
         Vec3<T> radiance = splat<T>(light.radiance);
         Incidence<T> incidence;
         switch (light.kind) {
-            case PreparedLight::Kind::Ambient:
-                total = total + ambient_term(radiance, material);
+            case PreparedLight::Kind::Ambient: {
+                const Vec3<T> ambient = ambient_term(radiance, material);
+                trace.light(light, ambient);
+                total = total + ambient;
                 continue;
+            }
             case PreparedLight::Kind::Directional:
                 incidence = directional_incidence(splat<T>(light.direction));
                 break;
@@ -334,8 +364,10 @@ Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& m
                                                    T(light.exponent));
                 break;
         }
-        Reflected<T> reflected = reflect<R>(normal, incidence.to_light, to_eye, material);
-        total = total + direct_term(radiance, incidence.factor, reflected, material);
+        Reflected<T> reflected = reflect<R>(normal, incidence.to_light, to_eye, material, trace);
+        const Vec3<T> direct = direct_term(radiance, incidence.factor, reflected, material);
+        trace.light(light, direct, incidence, reflected);
+        total = total + direct;
     }
     return total;
 }

@@ -10,7 +10,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
+#include <vector>
 
 namespace litkit {
 
@@ -128,6 +130,33 @@ struct Light {
 // decides which normal that is).
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
                 const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye);
+
+// One light's part in shade(), with the values of docs/spec.md §4 and §9 that
+// gave it, for showing the arithmetic (a student checking a hand calculation,
+// `litkit explain`).
+struct LightTerms {
+    bool ambient = false;
+    glm::vec3 to_light{0.0f};  // L (zero for an ambient light)
+    float factor = 1.0f;       // f: attenuation × spot factor (1 for directional)
+    float diffuse = 0.0f;      // what multiplies the colour: k_d·D for most models
+    glm::vec3 color{0.0f};     // the colour it multiplies: C; gooch's wash
+    float specular = 0.0f;     // S
+    // The model's named intermediate values: A, B, s, t (oren-nayar); D_GGX,
+    // Vis, F (cook-torrance); band (toon); t, cool.r…, warm.b (gooch).
+    std::vector<std::pair<std::string, float>> intermediates;
+    glm::vec3 contribution{0.0f};  // this light's part of I
+};
+
+struct ShadeTerms {
+    std::vector<LightTerms> lights;  // in the order given
+    glm::vec3 total{0.0f};           // I, exactly what shade() returns
+};
+
+// shade() with its working: each light's terms and the model's intermediate
+// values. `total` is shade()'s result, bit for bit (the same evaluation).
+ShadeTerms shade_terms(Reflection reflection, const Material& material,
+                       std::span<const Light> lights, const glm::vec3& position,
+                       const glm::vec3& normal, const glm::vec3& eye);
 
 // The pixel value of docs/spec.md §4 for one channel: round(255 · clamp(I, 0, 1)^(1/gamma)).
 unsigned char to_pixel(float intensity, float gamma);

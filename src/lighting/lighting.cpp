@@ -128,6 +128,57 @@ glm::vec3 shade(Reflection reflection, const Material& material, std::span<const
     return shade_scalar(reflection, prepared, splat<float>(material), position, normal, eye);
 }
 
+namespace {
+
+// Records what shade_point reports, light by light.
+struct TermsRecorder {
+    ShadeTerms* terms;
+    std::vector<std::pair<std::string, float>>* pending;
+
+    void operator()(const char* name, float value) const { pending->emplace_back(name, value); }
+    void light(const equations::PreparedLight&, const equations::Vec3<float>& ambient) const {
+        LightTerms& entry = terms->lights.emplace_back();
+        entry.ambient = true;
+        entry.contribution = {ambient.x, ambient.y, ambient.z};
+    }
+    void light(const equations::PreparedLight&, const equations::Vec3<float>& direct,
+               const equations::Incidence<float>& incidence,
+               const equations::Reflected<float>& reflected) const {
+        LightTerms& entry = terms->lights.emplace_back();
+        entry.to_light = {incidence.to_light.x, incidence.to_light.y, incidence.to_light.z};
+        entry.factor = incidence.factor;
+        entry.diffuse = reflected.diffuse;
+        entry.color = {reflected.color.x, reflected.color.y, reflected.color.z};
+        entry.specular = reflected.specular;
+        entry.intermediates = std::move(*pending);
+        pending->clear();
+        entry.contribution = {direct.x, direct.y, direct.z};
+    }
+};
+
+}  // namespace
+
+ShadeTerms shade_terms(Reflection reflection, const Material& material,
+                       std::span<const Light> lights, const glm::vec3& position,
+                       const glm::vec3& normal, const glm::vec3& eye) {
+    using namespace equations;
+    std::vector<PreparedLight> prepared;
+    prepared.reserve(lights.size());
+    for (const Light& light : lights) prepared.push_back(prepare_light(light));
+
+    ShadeTerms terms;
+    std::vector<std::pair<std::string, float>> pending;
+    const TermsRecorder recorder{&terms, &pending};
+    const Vec3<float> p = splat<float>(position);
+    const Vec3<float> v = normalize(splat<float>(eye) - p);
+    const Vec3<float> total = with_reflection(reflection, [&](auto model) {
+        return shade_point<decltype(model)::value>(prepared, splat<float>(material), p,
+                                                   splat<float>(normal), v, recorder);
+    });
+    terms.total = {total.x, total.y, total.z};
+    return terms;
+}
+
 unsigned char to_pixel(float intensity, float gamma) {
     // NaN fails both comparisons and maps to 0 rather than to garbage.
     float clamped = intensity > 0.0f ? (intensity < 1.0f ? intensity : 1.0f) : 0.0f;
