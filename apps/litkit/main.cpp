@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "litkit/compare.hpp"
 #include "litkit/error.hpp"
 #include "litkit/export.hpp"
 #include "litkit/files.hpp"
@@ -23,6 +24,7 @@
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
+#include "litkit/turntable.hpp"
 
 namespace {
 
@@ -46,6 +48,22 @@ struct SceneArguments {
 struct RenderArguments {
     SceneArguments scene;
     std::string output;
+    bool yes = false;
+};
+
+struct CompareArguments {
+    SceneArguments scene;  // --width/--height: the size of one tile
+    std::string output;
+    std::string vary = "both";
+    bool no_labels = false;
+    bool yes = false;
+};
+
+struct TurntableArguments {
+    SceneArguments scene;
+    std::string output;
+    int frames = 72;
+    int delay_ms = 40;
     bool yes = false;
 };
 
@@ -314,6 +332,126 @@ int run_export(const ExportArguments& arguments) {
     return exit_success;
 }
 
+// The output must not be one of the inputs (docs/spec.md §6).
+void refuse_to_overwrite_inputs(const litkit::Scene& scene, const std::vector<std::string>& files,
+                                const fs::path& output) {
+    for (const fs::path& input : inputs_of(scene, files)) {
+        if (litkit::same_file(input, output)) {
+            throw UsageError{"refusing to write over input file '" + input.string() +
+                             "'; choose another name with -o"};
+        }
+    }
+}
+
+// A scene file's stem with a suffix: "scene.toml" → "scene-compare.png".
+fs::path output_beside(const std::vector<std::string>& scenes, const std::string& suffix) {
+    const std::string stem = scenes.empty() ? "default" : fs::path(scenes.front()).stem().string();
+    return stem + suffix;
+}
+
+int run_compare(const CompareArguments& arguments) {
+    // --width/--height size the tiles here; --reflection/--shading set the
+    // model that --vary keeps.
+    SceneArguments scene_arguments = arguments.scene;
+    scene_arguments.width.reset();
+    scene_arguments.height.reset();
+    litkit::Scene scene = load(scene_arguments);
+    if (arguments.vary != "both") settle_missing_lighting(scene, arguments.yes);
+    const std::vector<std::string>& files = arguments.scene.scenes;
+    const fs::path output = arguments.output.empty() ? output_beside(files, "-compare.png")
+                                                     : fs::path(arguments.output);
+    refuse_to_overwrite_inputs(scene, files, output);
+
+    litkit::CompareOptions options;
+    options.tile_width = arguments.scene.width.value_or(0);
+    options.tile_height = arguments.scene.height.value_or(0);
+    options.vary = arguments.vary == "reflection" ? litkit::CompareOptions::Vary::Reflection
+                   : arguments.vary == "shading"  ? litkit::CompareOptions::Vary::Shading
+                                                  : litkit::CompareOptions::Vary::Both;
+    options.labels = !arguments.no_labels;
+    options.threads = arguments.scene.threads;
+    const auto start = std::chrono::steady_clock::now();
+    const litkit::CompareGrid grid = litkit::compare_models(scene, options);
+    litkit::write_png(grid.image, output);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!grid.overridden_objects.empty()) {
+        std::string names;
+        for (std::size_t index : grid.overridden_objects) {
+            const std::string& name = scene.objects[index].name;
+            names += (names.empty() ? "" : ", ") +
+                     (name.empty() ? "objects[" + std::to_string(index) + "]" : "'" + name + "'");
+        }
+        std::cout << "litkit: note: " << names
+                  << " set their own models; every tile draws them in the tile's models\n";
+    }
+    std::cout << "litkit: wrote " << output.string() << " (" << grid.image.width << "x"
+              << grid.image.height << ", " << grid.rows.size() << " x " << grid.columns.size()
+              << " tiles of " << grid.tile_width << "x" << grid.tile_height << ", "
+              << static_cast<int>(seconds * 1000.0 + 0.5) << " ms)\n";
+    return exit_success;
+}
+
+// "[#####.....] 12/72 frames, 30.1 frames/s, 2 s left" on a terminal.
+void show_progress(int done, int total, double seconds) {
+    constexpr int bar = 30;
+    const int filled = done * bar / total;
+    const double rate = seconds > 0.0 ? done / seconds : 0.0;
+    const double left = rate > 0.0 ? (total - done) / rate : 0.0;
+    std::fprintf(stderr, "\r[%s%s] %d/%d frames, %.1f frames/s, %.0f s left ",
+                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                 std::string(static_cast<std::size_t>(bar - filled), '.').c_str(), done, total, rate,
+                 left);
+    std::fflush(stderr);
+}
+
+int run_turntable(const TurntableArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
+    const std::vector<std::string>& files = arguments.scene.scenes;
+    const std::string target =
+        arguments.output.empty() ? output_beside(files, ".gif").string() : arguments.output;
+    // "DIR/" or an existing folder: numbered PNGs; anything else: one GIF.
+    const bool to_folder = target.ends_with('/') || fs::is_directory(target);
+    const fs::path output(target);
+    if (!to_folder) refuse_to_overwrite_inputs(scene, files, output);
+
+    const bool terminal = ::isatty(STDERR_FILENO) == 1;
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    const litkit::Observer own = scene.observer;
+    std::vector<litkit::Image> frames;
+    std::vector<fs::path> written;
+    const int digits = std::max(3, static_cast<int>(std::to_string(arguments.frames - 1).size()));
+    if (to_folder) fs::create_directories(output);
+    for (int k = 0; k < arguments.frames; ++k) {
+        scene.observer = litkit::orbit(own, 360.0 * k / arguments.frames);
+        Backend renderer(scene, arguments.scene);
+        litkit::Image image;
+        renderer.render_into(image);
+        if (to_folder) {
+            std::string number = std::to_string(k);
+            number.insert(0, static_cast<std::size_t>(digits) - number.size(), '0');
+            const fs::path frame = output / ("frame-" + number + ".png");
+            refuse_to_overwrite_inputs(scene, files, frame);
+            litkit::write_png(image, frame);
+            written.push_back(frame);
+        } else {
+            frames.push_back(std::move(image));
+        }
+        if (terminal) show_progress(k + 1, arguments.frames, elapsed());
+    }
+    if (!to_folder) litkit::write_gif(frames, output, arguments.delay_ms);
+    if (terminal) std::fputs("\n", stderr);
+    std::cout << "litkit: wrote " << (to_folder ? written.size() : 1) << " "
+              << (to_folder ? "frames into " : "animated GIF ") << output.string() << " ("
+              << arguments.frames << " frames, " << static_cast<int>(elapsed() * 1000.0 + 0.5)
+              << " ms)\n";
+    return exit_success;
+}
+
 int run_init(const std::string& file, bool force) {
     const fs::path path = file.empty() ? fs::path("scene.toml") : fs::path(file);
     std::error_code error;
@@ -371,6 +509,40 @@ int main(int argc, char** argv) {
                              "Use the default models (phong / phong) where [lighting] leaves one out");
     export_command->add_flag("-f,--force", export_arguments.force, "Replace files that exist");
 
+    CompareArguments compare_arguments;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "One picture of the scene under every reflection x shading pair, labelled");
+    add_scene_options(compare, compare_arguments.scene);
+    compare->get_option("--width")->description("Width of one tile (default: the scene's halved)");
+    compare->get_option("--height")->description("Height of one tile (default: the scene's halved)");
+    compare->add_option("-o,--output", compare_arguments.output,
+                        "Output PNG (default: the first scene's name with -compare.png)");
+    compare->add_option("--vary", compare_arguments.vary,
+                        "both: every pair; reflection: one column (the scene's shading); "
+                        "shading: one row (the scene's reflection model)")
+        ->check(CLI::IsMember({"both", "reflection", "shading"}))
+        ->capture_default_str();
+    compare->add_flag("--no-labels", compare_arguments.no_labels,
+                      "Only the tiles, edge to edge (each equals litkit render of that pair)");
+    compare->add_flag("-y,--yes", compare_arguments.yes,
+                      "Use the default models (phong / phong) where [lighting] leaves one out");
+
+    TurntableArguments turntable_arguments;
+    CLI::App* turntable = app.add_subcommand(
+        "turntable", "The observer circles look_at once: an animated GIF, or PNG frames in DIR/");
+    add_scene_options(turntable, turntable_arguments.scene);
+    turntable->add_option("-o,--output", turntable_arguments.output,
+                          "spin.gif, or DIR/ for numbered PNGs (default: the first scene's name "
+                          "with .gif)");
+    turntable->add_option("--frames", turntable_arguments.frames, "Frames in one turn")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
+    turntable->add_option("--delay", turntable_arguments.delay_ms, "GIF: milliseconds per frame")
+        ->check(CLI::Range(10, 10000))
+        ->capture_default_str();
+    turntable->add_flag("-y,--yes", turntable_arguments.yes,
+                        "Use the default models (phong / phong) where [lighting] leaves one out");
+
     BenchArguments bench_arguments;
     CLI::App* bench = app.add_subcommand(
         "bench", "Render frames into memory and report the time per frame");
@@ -393,6 +565,8 @@ int main(int argc, char** argv) {
         if (init->parsed()) return run_init(init_file, init_force);
         if (bench->parsed()) return run_bench(bench_arguments);
         if (export_command->parsed()) return run_export(export_arguments);
+        if (compare->parsed()) return run_compare(compare_arguments);
+        if (turntable->parsed()) return run_turntable(turntable_arguments);
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
         print_diagnostics(error.warnings());

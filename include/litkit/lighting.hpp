@@ -45,6 +45,7 @@ struct ReflectionModel {
 std::span<const ReflectionModel> reflection_models();
 // docs/spec.md §3, DD8–DD10.
 enum class Shading { Flat, Gouraud, Phong };
+inline constexpr int shading_count = static_cast<int>(Shading::Phong) + 1;
 
 // Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
 // "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
