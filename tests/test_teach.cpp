@@ -14,6 +14,7 @@
 #include <string>
 
 #include "litkit/compare.hpp"
+#include "litkit/explain.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
@@ -302,4 +303,191 @@ TEST(Gif, RefusesFramesOfDifferentSizesAndWritesNothing) {
     EXPECT_THROW(litkit::write_gif(frames, path), litkit::IoError);
     EXPECT_FALSE(fs::exists(path));
     EXPECT_THROW(litkit::write_gif(std::span<const litkit::Image>{}, path), litkit::IoError);
+}
+
+// ---- litkit explain ----
+
+namespace {
+
+// Nine small balls, one per reflection model, under all four kinds of light,
+// every object drawn with `shading`.
+litkit::Scene model_balls(litkit::Shading shading, float gamma) {
+    litkit::Scene scene;
+    scene.room = {12.0f, 12.0f, 12.0f};
+    scene.observer.position = {0.0f, 0.5f, 5.0f};
+    scene.output = {54, 40, {10, 20, 30}, gamma};
+    scene.reflection = litkit::Reflection::Phong;
+    scene.shading = shading;
+    litkit::Light ambient{litkit::AmbientLight{}, glm::vec3(1.0f), 0.2f};
+    litkit::Light sun{litkit::DirectionalLight{{-1.0f, -1.0f, -0.7f}}, glm::vec3(1.0f, 0.95f, 0.9f),
+                      0.6f};
+    litkit::Light bulb{litkit::PointLight{{2.0f, 2.0f, 2.0f}, {0.5f, 0.0f, 0.1f}}, glm::vec3(1.0f),
+                       2.0f};
+    litkit::SpotLight cone;
+    cone.position = {-1.5f, 2.5f, 2.0f};
+    cone.direction = {0.5f, -1.0f, -0.8f};
+    cone.cutoff_degrees = 25.0f;
+    cone.exponent = 2.0f;
+    cone.penumbra = 0.3f;
+    litkit::Light spot{cone, glm::vec3(1.0f, 0.8f, 0.6f), 3.0f};
+    scene.lights = {{"fill", ambient}, {"sun", sun}, {"bulb", bulb}, {"spot", spot}};
+    int i = 0;
+    for (const litkit::ReflectionModel& model : litkit::reflection_models()) {
+        litkit::SceneObject ball;
+        ball.name = std::string(model.name);
+        ball.shape = litkit::SphereShape{0.45f, 16, 8};
+        ball.position = {-1.1f + 1.1f * static_cast<float>(i % 3),
+                         1.1f - 1.1f * static_cast<float>(i / 3), 0.0f};
+        ball.reflection = model.id;
+        ball.material.color = glm::vec3(0.8f, 0.5f, 0.3f);
+        scene.objects.push_back(ball);
+        ++i;
+    }
+    return scene;
+}
+
+// Every pixel of the scene: explain's rgb is render's pixel; the parts add
+// up to the sum; the sum gives the pixel.
+void expect_every_pixel_explained(const litkit::Scene& scene, const std::string& label) {
+    const litkit::Image image = litkit::render(scene);
+    int hits = 0, checked = 0;
+    for (int y = 0; y < scene.output.height; ++y) {
+        for (int x = 0; x < scene.output.width; ++x) {
+            const litkit::PixelExplanation e = litkit::explain_pixel(scene, x, y);
+            const std::uint8_t* pixel = image.pixel(x, y);
+            ASSERT_EQ(e.rgb, (litkit::Rgb8{pixel[0], pixel[1], pixel[2]}))
+                << label << " pixel " << x << "," << y;
+            ++checked;
+            if (!e.hit) {
+                EXPECT_EQ(e.rgb, scene.output.background) << label << " " << x << "," << y;
+                continue;
+            }
+            ++hits;
+            // The parts: each light's contribution (Gouraud: each corner's
+            // sum, mixed with the weights) add up to I, to float rounding.
+            glm::vec3 total{0.0f};
+            if (e.shading == litkit::Shading::Gouraud) {
+                ASSERT_EQ(e.evaluations.size(), 3u);
+                for (int k = 0; k < 3; ++k) {
+                    glm::vec3 corner{0.0f};
+                    for (const litkit::LightTerms& light :
+                         e.evaluations[static_cast<std::size_t>(k)].terms.lights)
+                        corner += light.contribution;
+                    total += e.weights[static_cast<std::size_t>(k)] * corner;
+                }
+            } else {
+                ASSERT_EQ(e.evaluations.size(), 1u);
+                for (const litkit::LightTerms& light : e.evaluations[0].terms.lights)
+                    total += light.contribution;
+            }
+            if (!e.clipped) {
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(total[c], e.sum[c], 2e-5f * std::max(1.0f, std::abs(e.sum[c])))
+                        << label << " pixel " << x << "," << y << " channel " << c;
+            }
+            // round(255 · clamp(I)^(1/γ)) is the pixel.
+            for (int c = 0; c < 3; ++c)
+                EXPECT_EQ(litkit::to_pixel(e.sum[c], scene.output.gamma),
+                          e.rgb[static_cast<std::size_t>(c)])
+                    << label << " pixel " << x << "," << y << " channel " << c;
+        }
+    }
+    EXPECT_GT(hits, checked / 10) << label << ": the objects cover too little to test";
+}
+
+}  // namespace
+
+TEST(Explain, EveryPixelOfEveryModelPairAndLightKind) {
+    for (litkit::Shading shading :
+         {litkit::Shading::Flat, litkit::Shading::Gouraud, litkit::Shading::Phong}) {
+        for (float gamma : {1.0f, 2.2f}) {
+            const std::string label =
+                std::string(litkit::to_string(shading)) + " gamma " + std::to_string(gamma);
+            expect_every_pixel_explained(model_balls(shading, gamma), label);
+        }
+    }
+}
+
+TEST(Explain, EveryPixelOfTheDefaultScene) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.width = 64;
+    scene.output.height = 48;
+    expect_every_pixel_explained(scene, "default");
+}
+
+TEST(Explain, ShowsTheOrangeCubesCentreStepByStep) {
+    // The default scene's pixel (400, 300): on the cube, phong/phong, one
+    // point light. The text names the object, the models and every symbol.
+    const litkit::Scene scene = litkit::default_scene();
+    const litkit::PixelExplanation e = litkit::explain_pixel(scene, 400, 300);
+    ASSERT_TRUE(e.hit);
+    EXPECT_EQ(e.object_name, "cube");
+    const std::string text = litkit::explanation_text(e, scene);
+    for (const char* expected :
+         {"visible: objects[0] 'cube' (cube)", "reflection phong, shading phong",
+          "V = normalize(eye - p)", "lights[0] 'bulb' (point)", "N.L = ", "clamp to [0, 1]",
+          "rgb = round(255 * that)"})
+        EXPECT_NE(text.find(expected), std::string::npos) << expected << " in\n" << text;
+    // The weights are perspective-correct barycentrics: they sum to 1, and
+    // mixing the corners with them gives the point lit.
+    EXPECT_NEAR(e.weights[0] + e.weights[1] + e.weights[2], 1.0f, 1e-6f);
+    glm::vec3 p{0.0f};
+    for (int k = 0; k < 3; ++k)
+        p += e.weights[static_cast<std::size_t>(k)] * e.corners[static_cast<std::size_t>(k)];
+    EXPECT_NEAR(glm::length(p - e.evaluations.at(0).position), 0.0f, 1e-5f);
+}
+
+TEST_F(Teach, ExplainJsonHasTheKeysAndParses) {
+    const auto made = cli("explain --pixel 400,300 --json");
+    ASSERT_EQ(made.status, 0) << made.output;
+    std::ofstream(dir / "out.json") << made.output;
+    // Python's json module parses it and finds the keys docs/learning.md lists.
+    const auto parsed = run_command(
+        "python3 -c \"import json,sys; d=json.load(open('" + (dir / "out.json").string() +
+        "')); ks=['pixel','hit','object','triangle','reflection','shading','position','normal',"
+        "'lights','sum','rgb']; missing=[k for k in ks if k not in d]; "
+        "lk=['name','type','diffuse','specular','factor','contribution']; "
+        "missing+=[k for k in lk if k not in d['lights'][0]]; print('missing', missing); "
+        "sys.exit(1 if missing or d['pixel']!=[400,300] or not d['hit'] else 0)\"");
+    EXPECT_EQ(parsed.status, 0) << parsed.output << made.output;
+    // Background: only the pixel, hit false and rgb.
+    const auto background = cli("explain --pixel 0,0 --json");
+    ASSERT_EQ(background.status, 0);
+    EXPECT_EQ(background.output, "{\"pixel\": [0, 0], \"hit\": false, \"rgb\": [25, 28, 36]}\n");
+}
+
+TEST_F(Teach, ExplainGouraudListsTheThreeVertices) {
+    const auto made = cli("explain --pixel 400,300 --shading gouraud --json");
+    ASSERT_EQ(made.status, 0) << made.output;
+    EXPECT_NE(made.output.find("\"vertices\": [{"), std::string::npos) << made.output;
+    EXPECT_NE(made.output.find("\"weights\": ["), std::string::npos) << made.output;
+}
+
+TEST_F(Teach, ExplainAtAPointChecksHomework) {
+    // The default scene's light: a point light at the origin, intensity 15,
+    // attenuation 1/d². At p = (0, -2, 0) with N = (0, 1, 0) and the cube's
+    // material (C = (200, 80, 60)/255, k_d = 0.7, k_s = 0.5, α = 32), phong:
+    // L = (0, 1, 0), d = 2, f = 1/4, N·L = 1, D = 1; R = (0, 1, 0);
+    // V = normalize((3.5, 1, 4) − p) = (3.5, 3, 4)/√(37.25);
+    // R·V = 3/6.10328 = 0.491539, S = 0.491539^32 = 1.3e-10 (tiny).
+    // I_r = 15/4 · (0.7 · 200/255) = 2.058824 → clamped to 1 → 255.
+    // I_g = 15/4 · (0.7 · 80/255) = 0.823529 → round(210.0) = 210.
+    // I_b = 15/4 · (0.7 · 60/255) = 0.617647 → round(157.5) = 158.
+    const auto made = cli("explain --at 0,-2,0 --normal 0,2,0 --json");
+    ASSERT_EQ(made.status, 0) << made.output;
+    EXPECT_NE(made.output.find("\"rgb\": [255, 210, 158]"), std::string::npos) << made.output;
+    EXPECT_NE(made.output.find("\"factor\": 0.25"), std::string::npos) << made.output;
+    // The sum, by hand: (2.058824, 0.823529, 0.617647).
+    const std::size_t at = made.output.rfind("\"sum\": [");
+    ASSERT_NE(at, std::string::npos) << made.output;
+    float r = 0, g = 0, b = 0;
+    ASSERT_EQ(std::sscanf(made.output.c_str() + at, "\"sum\": [%f, %f, %f]", &r, &g, &b), 3);
+    EXPECT_NEAR(r, 2.058824f, 1e-5f);
+    EXPECT_NEAR(g, 0.823529f, 1e-5f);
+    EXPECT_NEAR(b, 0.617647f, 1e-5f);
+    const auto text = cli("explain --at 0,-2,0 --normal 0,1,0");
+    EXPECT_NE(text.output.find("L = (0, 1, 0), f = 0.25"), std::string::npos) << text.output;
+    EXPECT_EQ(cli("explain --at 0,0,0").status, 2);
+    EXPECT_EQ(cli("explain").status, 2);
+    EXPECT_EQ(cli("explain --pixel 800,0").status, 2);
 }

@@ -18,6 +18,7 @@
 
 #include "litkit/compare.hpp"
 #include "litkit/error.hpp"
+#include "litkit/explain.hpp"
 #include "litkit/export.hpp"
 #include "litkit/files.hpp"
 #include "litkit/gl_renderer.hpp"
@@ -56,6 +57,16 @@ struct CompareArguments {
     std::string output;
     std::string vary = "both";
     bool no_labels = false;
+    bool yes = false;
+};
+
+struct ExplainArguments {
+    SceneArguments scene;
+    std::vector<int> pixel;     // X,Y
+    std::vector<float> at;      // X,Y,Z
+    std::vector<float> normal;  // NX,NY,NZ
+    std::string object;         // --at: whose material (name or index)
+    bool json = false;
     bool yes = false;
 };
 
@@ -392,6 +403,57 @@ int run_compare(const CompareArguments& arguments) {
     return exit_success;
 }
 
+int run_explain(const ExplainArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
+    if (arguments.pixel.empty() == arguments.at.empty())
+        throw UsageError{"explain needs either --pixel X,Y or --at X,Y,Z --normal NX,NY,NZ"};
+    if (!arguments.pixel.empty()) {
+        const int x = arguments.pixel[0], y = arguments.pixel[1];
+        if (x < 0 || y < 0 || x >= scene.output.width || y >= scene.output.height) {
+            throw UsageError{"pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                             ") is outside the " + std::to_string(scene.output.width) + "x" +
+                             std::to_string(scene.output.height) + " image"};
+        }
+        litkit::RenderOptions options;
+        options.threads = arguments.scene.threads;
+        const litkit::PixelExplanation explanation = litkit::explain_pixel(scene, x, y, options);
+        std::cout << (arguments.json ? litkit::explanation_json(explanation, scene) + "\n"
+                                     : litkit::explanation_text(explanation, scene));
+        return exit_success;
+    }
+    if (arguments.normal.empty()) throw UsageError{"--at needs --normal NX,NY,NZ"};
+    const glm::vec3 normal{arguments.normal[0], arguments.normal[1], arguments.normal[2]};
+    if (normal == glm::vec3(0.0f)) throw UsageError{"--normal must not be the zero vector"};
+    // The material: the object named (or numbered) by --object, else the first.
+    litkit::Material material;
+    std::optional<litkit::Reflection> reflection;
+    if (!scene.objects.empty()) {
+        std::size_t index = 0;
+        if (!arguments.object.empty()) {
+            const auto named = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                            [&](const litkit::SceneObject& o) { return o.name == arguments.object; });
+            if (named != scene.objects.end()) {
+                index = static_cast<std::size_t>(named - scene.objects.begin());
+            } else if (std::all_of(arguments.object.begin(), arguments.object.end(), ::isdigit) &&
+                       std::stoul(arguments.object) < scene.objects.size()) {
+                index = std::stoul(arguments.object);
+            } else {
+                throw UsageError{"no object '" + arguments.object + "' in the scene"};
+            }
+        }
+        material = scene.objects[index].material;
+        reflection = scene.objects[index].reflection;
+    }
+    const litkit::Reflection model =
+        reflection.value_or(scene.reflection.value_or(litkit::default_reflection));
+    const litkit::PointEvaluation point = litkit::explain_point(
+        scene, model, material, {arguments.at[0], arguments.at[1], arguments.at[2]}, normal);
+    std::cout << (arguments.json ? litkit::evaluation_json(point, scene, model) + "\n"
+                                 : litkit::evaluation_text(point, scene, model, material));
+    return exit_success;
+}
+
 // "[#####.....] 12/72 frames, 30.1 frames/s, 2 s left" on a terminal.
 void show_progress(int done, int total, double seconds) {
     constexpr int bar = 30;
@@ -527,6 +589,26 @@ int main(int argc, char** argv) {
     compare->add_flag("-y,--yes", compare_arguments.yes,
                       "Use the default models (phong / phong) where [lighting] leaves one out");
 
+    ExplainArguments explain_arguments;
+    CLI::App* explain = app.add_subcommand(
+        "explain", "How a pixel of litkit render got its value, step by step; or the equations "
+                   "at a point of your choosing (--at, --normal)");
+    add_scene_options(explain, explain_arguments.scene);
+    explain->add_option("--pixel", explain_arguments.pixel, "The pixel X,Y (0,0: top left)")
+        ->delimiter(',')
+        ->expected(2);
+    explain->add_option("--at", explain_arguments.at, "A point X,Y,Z in the world")
+        ->delimiter(',')
+        ->expected(3);
+    explain->add_option("--normal", explain_arguments.normal, "With --at: the surface normal NX,NY,NZ")
+        ->delimiter(',')
+        ->expected(3);
+    explain->add_option("--object", explain_arguments.object,
+                        "With --at: the object (name or index) whose material to use (default: the first)");
+    explain->add_flag("--json", explain_arguments.json, "One JSON object instead of text");
+    explain->add_flag("-y,--yes", explain_arguments.yes,
+                      "Use the default models (phong / phong) where [lighting] leaves one out");
+
     TurntableArguments turntable_arguments;
     CLI::App* turntable = app.add_subcommand(
         "turntable", "The observer circles look_at once: an animated GIF, or PNG frames in DIR/");
@@ -567,6 +649,7 @@ int main(int argc, char** argv) {
         if (export_command->parsed()) return run_export(export_arguments);
         if (compare->parsed()) return run_compare(compare_arguments);
         if (turntable->parsed()) return run_turntable(turntable_arguments);
+        if (explain->parsed()) return run_explain(explain_arguments);
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
         print_diagnostics(error.warnings());

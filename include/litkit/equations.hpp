@@ -154,7 +154,10 @@ T specular_power(const T& base, const T& shininess) {
 struct NoTrace {
     template <class T>
     void operator()(const char*, const T&) const {}
-    // shade_point also reports each light's part (litkit::shade_terms).
+    // reflect and shade_point also report D and S and each light's part
+    // (litkit::shade_terms).
+    template <class... Parts>
+    void model_terms(const Parts&...) const {}
     template <class... Parts>
     void light(const Parts&...) const {}
 };
@@ -268,8 +271,10 @@ Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<
         trace("warm.r", warm.x);
         trace("warm.g", warm.y);
         trace("warm.b", warm.z);
+        trace.model_terms(terms);
         return {T(1), t * warm + (T(1) - t) * cool, terms.specular};
     } else {
+        trace.model_terms(terms);
         return {material.kd * terms.diffuse, material.color, terms.specular};
     }
 }

@@ -139,9 +139,12 @@ struct LightTerms {
     bool ambient = false;
     glm::vec3 to_light{0.0f};  // L (zero for an ambient light)
     float factor = 1.0f;       // f: attenuation × spot factor (1 for directional)
-    float diffuse = 0.0f;      // what multiplies the colour: k_d·D for most models
-    glm::vec3 color{0.0f};     // the colour it multiplies: C; gooch's wash
+    float diffuse = 0.0f;      // D
     float specular = 0.0f;     // S
+    // What f·I_L multiplies: weight·color + k_s·S per channel; weight = k_d·D
+    // and color = C for every model but gooch (weight 1, its cool-to-warm wash).
+    float weight = 0.0f;
+    glm::vec3 color{0.0f};
     // The model's named intermediate values: A, B, s, t (oren-nayar); D_GGX,
     // Vis, F (cook-torrance); band (toon); t, cool.r…, warm.b (gooch).
     std::vector<std::pair<std::string, float>> intermediates;

@@ -1,7 +1,11 @@
 // The CPU renderer: draws a scene exactly as docs/spec.md §1–§4 define it.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
+
+#include <glm/vec3.hpp>
 
 #include "litkit/image.hpp"
 #include "litkit/scene.hpp"
@@ -20,6 +24,23 @@ struct RenderOptions {
     Kernels kernels = Kernels::Best;
 };
 
+// What the renderer computed at one pixel (litkit explain): the triangle it
+// shows, the perspective-correct weights of its corners, the values the
+// fragment stage interpolated from them, the colour before clamping and the
+// pixel written.
+struct PixelProbe {
+    bool hit = false;              // false: the background
+    std::size_t object = 0;        // index into Scene::objects
+    std::size_t triangle = 0;      // within the object's mesh
+    std::array<std::uint32_t, 3> vertices{};  // the mesh vertex at each corner
+    bool clipped = false;          // a piece of a triangle crossing the near plane
+    std::array<float, 3> weights{};  // q0, q1, q2: perspective-correct, summing to 1
+    glm::vec3 position{0.0f};      // Phong shading: p interpolated from the corners
+    glm::vec3 normal{0.0f};        // Phong shading: N interpolated, before renormalising
+    glm::vec3 intensity{0.0f};     // I before clamping and gamma, as shaded
+    Rgb8 rgb{};                    // the pixel
+};
+
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)
 // so that several frames can be drawn without rebuilding it.
 class Renderer {
@@ -34,6 +55,10 @@ public:
     Image render();
     // Draws into `image`, reusing its storage (resized if needed).
     void render_into(Image& image);
+
+    // Draws one frame and reports how pixel (x, y) got its value. Throws
+    // std::out_of_range outside the image.
+    PixelProbe probe(int x, int y);
 
     std::size_t triangle_count() const;
     int thread_count() const;

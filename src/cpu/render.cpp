@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "litkit/equations.hpp"
@@ -182,6 +184,9 @@ struct Renderer::Impl {
     std::vector<BandScratch> scratch;  // one per thread
     std::vector<std::uint8_t> background_row;  // one image row of background colour
     int band_count = 0;
+    // Set while Renderer::probe draws: the pixel to record, and the record.
+    int probe_x = -1, probe_y = -1;
+    mutable PixelProbe probed;
 
     Impl(const Scene& s, RenderOptions o)
         : scene(s),
@@ -195,7 +200,47 @@ struct Renderer::Impl {
     void setup(SetupChunk& chunk, int width, int height);
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
+    void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
 };
+
+namespace {
+
+// Phong shading's varyings at a pixel: p and N mixed from the corners (the
+// mesh's, or a clipped piece's) with the perspective-correct weights.
+inline void interpolate_surface(const PreparedObject& object, const RasterTriangle& tri, float q0,
+                                float q1, float q2, glm::vec3& p, glm::vec3& n) {
+    if (tri.clipped < 0) {
+        p = q0 * object.positions[tri.vertex[0]] + q1 * object.positions[tri.vertex[1]] +
+            q2 * object.positions[tri.vertex[2]];
+        n = q0 * object.normals[tri.vertex[0]] + q1 * object.normals[tri.vertex[1]] +
+            q2 * object.normals[tri.vertex[2]];
+    } else {
+        const CornerVaryings& v = *tri.varyings;
+        auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
+        p = {mix(0), mix(1), mix(2)};
+        n = {mix(3), mix(4), mix(5)};
+    }
+}
+
+}  // namespace
+
+// Renderer::probe's record of one visible pixel, made after its row is
+// shaded (so the hot loop carries no test for it), with the fragment stage's
+// own formulas.
+void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) const {
+    const RasterTriangle* tri = s.visible[i];
+    const float w = 1.0f / s.depth[i];
+    const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
+    probed.hit = true;
+    probed.object = tri->object;
+    probed.triangle = tri->source;
+    probed.vertices = tri->vertex;
+    probed.clipped = tri->clipped >= 0;
+    probed.weights = {q0, q1, q2};
+    interpolate_surface(objects[tri->object], *tri, q0, q1, q2, probed.position, probed.normal);
+    probed.intensity = {s.r[static_cast<std::size_t>(x)], s.g[static_cast<std::size_t>(x)],
+                        s.b[static_cast<std::size_t>(x)]};
+}
 
 void Renderer::Impl::prepare() {
     for (const SceneLight& light : scene.lights) lights.push_back(equations::prepare_light(light.light));
@@ -566,23 +611,15 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (run_object != &object || (run_length > 0 && s.run_x[run_length - 1] != x - 1)) flush();
         run_object = &object;
         glm::vec3 p, n;
-        if (tri->clipped < 0) {
-            p = q0 * object.positions[tri->vertex[0]] + q1 * object.positions[tri->vertex[1]] +
-                q2 * object.positions[tri->vertex[2]];
-            n = q0 * object.normals[tri->vertex[0]] + q1 * object.normals[tri->vertex[1]] +
-                q2 * object.normals[tri->vertex[2]];
-        } else {
-            const CornerVaryings& v = *tri->varyings;
-            auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
-            p = {mix(0), mix(1), mix(2)};
-            n = {mix(3), mix(4), mix(5)};
-        }
+        interpolate_surface(object, *tri, q0, q1, q2, p, n);
         s.px[run_length] = p.x, s.py[run_length] = p.y, s.pz[run_length] = p.z;
         s.nx[run_length] = n.x, s.ny[run_length] = n.y, s.nz[run_length] = n.z;
         s.run_x[run_length] = x;
         ++run_length;
     }
     flush();
+    if (y == probe_y && probe_x >= begin && probe_x < end && s.visible[offset + probe_x])
+        record_probe(s, offset + static_cast<std::size_t>(probe_x), probe_x);
 
     // Clamp, gamma and encode the covered pixels; background as given.
     // Background spans are copied from a row prepared once per frame.
@@ -652,6 +689,30 @@ void Renderer::render_into(Image& image) {
     impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
         impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
     });
+}
+
+PixelProbe Renderer::probe(int x, int y) {
+    const OutputSettings& output = impl_->scene.output;
+    if (x < 0 || y < 0 || x >= output.width || y >= output.height) {
+        throw std::out_of_range("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                ") is outside the " + std::to_string(output.width) + "x" +
+                                std::to_string(output.height) + " image");
+    }
+    impl_->probed = PixelProbe{};
+    impl_->probe_x = x;
+    impl_->probe_y = y;
+    Image image;
+    try {
+        render_into(image);
+    } catch (...) {
+        impl_->probe_x = impl_->probe_y = -1;
+        throw;
+    }
+    impl_->probe_x = impl_->probe_y = -1;
+    PixelProbe result = impl_->probed;
+    const std::uint8_t* pixel = image.pixel(x, y);
+    result.rgb = {pixel[0], pixel[1], pixel[2]};
+    return result;
 }
 
 Image Renderer::render() {

@@ -136,6 +136,10 @@ struct TermsRecorder {
     std::vector<std::pair<std::string, float>>* pending;
 
     void operator()(const char* name, float value) const { pending->emplace_back(name, value); }
+    void model_terms(const equations::Terms<float>& terms) const {
+        pending->emplace_back("D", terms.diffuse);
+        pending->emplace_back("S", terms.specular);
+    }
     void light(const equations::PreparedLight&, const equations::Vec3<float>& ambient) const {
         LightTerms& entry = terms->lights.emplace_back();
         entry.ambient = true;
@@ -147,9 +151,13 @@ struct TermsRecorder {
         LightTerms& entry = terms->lights.emplace_back();
         entry.to_light = {incidence.to_light.x, incidence.to_light.y, incidence.to_light.z};
         entry.factor = incidence.factor;
-        entry.diffuse = reflected.diffuse;
+        entry.weight = reflected.diffuse;
         entry.color = {reflected.color.x, reflected.color.y, reflected.color.z};
-        entry.specular = reflected.specular;
+        // D and S were recorded (as the last two values) by reflect.
+        entry.specular = pending->back().second;
+        pending->pop_back();
+        entry.diffuse = pending->back().second;
+        pending->pop_back();
         entry.intermediates = std::move(*pending);
         pending->clear();
         entry.contribution = {direct.x, direct.y, direct.z};

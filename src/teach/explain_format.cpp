@@ -1,0 +1,275 @@
+// litkit explain's two forms: text for reading, JSON for programs.
+#include <charconv>
+#include <cstdio>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <string>
+#include <variant>
+
+#include "litkit/explain.hpp"
+
+namespace litkit {
+
+namespace {
+
+// Shortest text that reads back as the same float.
+std::string num(float value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc() ? std::string(buffer, end) : "?";
+}
+
+std::string vec(const glm::vec3& v) {
+    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+}
+
+std::string json_number(float value) { return std::isfinite(value) ? num(value) : "null"; }
+std::string json_vec(const glm::vec3& v) {
+    return "[" + json_number(v.x) + ", " + json_number(v.y) + ", " + json_number(v.z) + "]";
+}
+std::string json_string(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (u < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", u);
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string light_type(const Light& light) {
+    struct Name {
+        std::string operator()(const AmbientLight&) const { return "ambient"; }
+        std::string operator()(const DirectionalLight&) const { return "directional"; }
+        std::string operator()(const PointLight&) const { return "point"; }
+        std::string operator()(const SpotLight&) const { return "spot"; }
+    };
+    return std::visit(Name{}, light.kind);
+}
+
+std::string light_label(const Scene& scene, std::size_t index) {
+    const SceneLight& light = scene.lights[index];
+    return "lights[" + std::to_string(index) + "]" +
+           (light.name.empty() ? "" : " '" + light.name + "'") + " (" + light_type(light.light) +
+           ")";
+}
+
+std::string object_label(const Scene& scene, std::size_t index) {
+    const SceneObject& object = scene.objects[index];
+    return "objects[" + std::to_string(index) + "]" +
+           (object.name.empty() ? "" : " '" + object.name + "'") + " (" +
+           std::string(shape_type_name(object.shape)) + ")";
+}
+
+// The lines of one evaluation of docs/spec.md §4 at a point.
+std::string evaluation_lines(const PointEvaluation& point, const Scene& scene,
+                             const Material& material, const std::string& indent) {
+    std::string text;
+    text += indent + "p = " + vec(point.position) + "\n";
+    text += indent + "N = " + vec(point.normal) + "\n";
+    text += indent + "V = normalize(eye - p) = " + vec(point.to_eye) + "   (eye " +
+            vec(scene.observer.position) + ")\n";
+    text += indent + "C = " + vec(material.color) + ", k_a = " + num(material.ka) +
+            ", k_d = " + num(material.kd) + ", k_s = " + num(material.ks) +
+            ", alpha = " + num(material.shininess) + "\n";
+    for (std::size_t i = 0; i < point.terms.lights.size() && i < scene.lights.size(); ++i) {
+        const LightTerms& terms = point.terms.lights[i];
+        const Light& light = scene.lights[i].light;
+        text += indent + light_label(scene, i) + ": I_L = " + vec(light.radiance()) + "\n";
+        if (terms.ambient) {
+            text += indent + "  ambient: k_a * C * I_L = " + vec(terms.contribution) + "\n";
+            continue;
+        }
+        text += indent + "  L = " + vec(terms.to_light) + ", f = " + num(terms.factor);
+        if (const auto* point_light = std::get_if<PointLight>(&light.kind)) {
+            text += "   (d = " + num(glm::length(point_light->position - point.position)) + ")";
+        } else if (const auto* spot = std::get_if<SpotLight>(&light.kind)) {
+            const float c = -glm::dot(terms.to_light, glm::normalize(spot->direction));
+            text += "   (d = " + num(glm::length(spot->position - point.position)) +
+                    ", c = " + num(c) +
+                    ", cos(cutoff) = " + num(std::cos(glm::radians(spot->cutoff_degrees))) + ")";
+        }
+        text += "\n";
+        text += indent + "  N.L = " + num(glm::dot(point.normal, terms.to_light)) +
+                ", D = " + num(terms.diffuse) + ", S = " + num(terms.specular) + "\n";
+        if (!terms.intermediates.empty()) {
+            text += indent + " ";
+            for (const auto& [name, value] : terms.intermediates)
+                text += " " + name + " = " + num(value);
+            text += "\n";
+        }
+        text += indent + "  f * I_L * (" + num(terms.weight) + " * " + vec(terms.color) +
+                " + k_s * S) = " + vec(terms.contribution) + "\n";
+    }
+    text += indent + "sum I = " + vec(point.terms.total) + "\n";
+    return text;
+}
+
+std::string json_lights(const PointEvaluation& point, const Scene& scene) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < point.terms.lights.size() && i < scene.lights.size(); ++i) {
+        const LightTerms& terms = point.terms.lights[i];
+        out += std::string(i ? ", " : "") + "{\"name\": " + json_string(scene.lights[i].name) +
+               ", \"type\": " + json_string(light_type(scene.lights[i].light)) +
+               ", \"to_light\": " + json_vec(terms.to_light) +
+               ", \"factor\": " + json_number(terms.factor) +
+               ", \"diffuse\": " + json_number(terms.diffuse) +
+               ", \"specular\": " + json_number(terms.specular) + ", \"intermediates\": {";
+        for (std::size_t k = 0; k < terms.intermediates.size(); ++k)
+            out += std::string(k ? ", " : "") + json_string(terms.intermediates[k].first) + ": " +
+                   json_number(terms.intermediates[k].second);
+        out += "}, \"contribution\": " + json_vec(terms.contribution) + "}";
+    }
+    return out + "]";
+}
+
+glm::vec3 clamped(const glm::vec3& sum) {
+    auto one = [](float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; };
+    return {one(sum.x), one(sum.y), one(sum.z)};
+}
+
+std::string rgb_text(const Rgb8& rgb) {
+    return "(" + std::to_string(rgb[0]) + ", " + std::to_string(rgb[1]) + ", " +
+           std::to_string(rgb[2]) + ")";
+}
+
+}  // namespace
+
+std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
+    std::string text = "pixel (" + std::to_string(e.x) + ", " + std::to_string(e.y) + ") of the " +
+                       std::to_string(scene.output.width) + "x" +
+                       std::to_string(scene.output.height) + " image\n";
+    if (!e.hit) {
+        return text + "no object covers it: the background colour, as given (no gamma)\nrgb = " +
+               rgb_text(e.rgb) + "\n";
+    }
+    const Material& material = scene.objects[e.object].material;
+    text += "visible: " + object_label(scene, e.object) + ", triangle " +
+            std::to_string(e.triangle) +
+            (e.clipped ? " (a piece of it: it crosses the near plane)" : "") + "\n";
+    text += "models: reflection " + std::string(to_string(e.reflection)) + ", shading " +
+            std::string(to_string(e.shading)) + "\n";
+    text += "corners (world space, docs/spec.md §2):\n";
+    for (int k = 0; k < 3; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        text += "  v" + std::to_string(k) + " = " + vec(e.corners[i]) + ", vertex normal (DD9) " +
+                vec(e.corner_normals[i]) + "\n";
+    }
+    text += "face normal (DD8, in the mesh's winding) = " + vec(e.face_normal) + "\n";
+    text += "perspective-correct weights of the corners at the pixel centre: (" +
+            num(e.weights[0]) + ", " + num(e.weights[1]) + ", " + num(e.weights[2]) + ")\n\n";
+    switch (e.shading) {
+        case Shading::Flat:
+            text +=
+                "flat shading (docs/spec.md §3): lit once, at the centroid, with the face normal\n";
+            text += evaluation_lines(e.evaluations.at(0), scene, material, "  ");
+            break;
+        case Shading::Gouraud:
+            text +=
+                "gouraud shading (docs/spec.md §3): lit at each corner with its vertex normal,\n"
+                "the unclamped colours mixed with the weights\n";
+            for (std::size_t k = 0; k < e.evaluations.size(); ++k) {
+                text += "  corner v" + std::to_string(k) + ":\n";
+                text += evaluation_lines(e.evaluations[k], scene, material, "    ");
+            }
+            text += "  I = w0 * I0 + w1 * I1 + w2 * I2\n";
+            break;
+        default:
+            text += std::string(to_string(e.shading)) +
+                    " shading (docs/spec.md §3): lit at the pixel, p and N interpolated from the\n"
+                    "corners with the weights, N renormalised (DD10)\n";
+            text += evaluation_lines(e.evaluations.at(0), scene, material, "  ");
+            break;
+    }
+    const glm::vec3 c = clamped(e.sum);
+    text += "\nI = " + vec(e.sum) + " (as the renderer computed it)\n";
+    text += "clamp to [0, 1]: " + vec(c) + "\n";
+    if (e.gamma != 1.0f)
+        text += "gamma " + num(e.gamma) + ": each channel ^ (1/" + num(e.gamma) + ")\n";
+    text += "rgb = round(255 * that) = " + rgb_text(e.rgb) + "\n";
+    return text;
+}
+
+std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
+    std::string out = "{\"pixel\": [" + std::to_string(e.x) + ", " + std::to_string(e.y) +
+                      "], \"hit\": " + (e.hit ? "true" : "false");
+    if (e.hit) {
+        const std::string weights = "[" + json_number(e.weights[0]) + ", " +
+                                    json_number(e.weights[1]) + ", " + json_number(e.weights[2]) +
+                                    "]";
+        out += ", \"object\": " +
+               json_string(e.object_name.empty() ? "objects[" + std::to_string(e.object) + "]"
+                                                 : e.object_name) +
+               ", \"object_index\": " + std::to_string(e.object) +
+               ", \"triangle\": " + std::to_string(e.triangle) +
+               ", \"reflection\": " + json_string(std::string(to_string(e.reflection))) +
+               ", \"shading\": " + json_string(std::string(to_string(e.shading))) +
+               ", \"clipped\": " + (e.clipped ? "true" : "false") + ", \"weights\": " + weights;
+        if (e.shading == Shading::Gouraud) {
+            out += ", \"vertices\": [";
+            for (std::size_t k = 0; k < e.evaluations.size(); ++k) {
+                const PointEvaluation& v = e.evaluations[k];
+                out += std::string(k ? ", " : "") + "{\"position\": " + json_vec(v.position) +
+                       ", \"normal\": " + json_vec(v.normal) +
+                       ", \"lights\": " + json_lights(v, scene) +
+                       ", \"sum\": " + json_vec(v.terms.total) + "}";
+            }
+            out += "]";
+            // The point of the pixel: the corners mixed with the weights.
+            glm::vec3 p{0.0f};
+            for (int k = 0; k < 3; ++k)
+                p +=
+                    e.weights[static_cast<std::size_t>(k)] * e.corners[static_cast<std::size_t>(k)];
+            out += ", \"position\": " + json_vec(p) + ", \"normal\": " + json_vec(e.face_normal) +
+                   ", \"lights\": []";
+        } else {
+            const PointEvaluation& v = e.evaluations.at(0);
+            out += ", \"position\": " + json_vec(v.position) +
+                   ", \"normal\": " + json_vec(v.normal) + ", \"lights\": " + json_lights(v, scene);
+        }
+        out += ", \"sum\": " + json_vec(e.sum) + ", \"gamma\": " + json_number(e.gamma);
+    }
+    out += ", \"rgb\": [" + std::to_string(e.rgb[0]) + ", " + std::to_string(e.rgb[1]) + ", " +
+           std::to_string(e.rgb[2]) + "]}";
+    return out;
+}
+
+std::string evaluation_text(const PointEvaluation& point, const Scene& scene, Reflection reflection,
+                            const Material& material) {
+    std::string text = "the equations of docs/spec.md §4 with reflection " +
+                       std::string(to_string(reflection)) + "\n";
+    text += evaluation_lines(point, scene, material, "  ");
+    const glm::vec3 c = clamped(point.terms.total);
+    Rgb8 rgb{to_pixel(point.terms.total.x, scene.output.gamma),
+             to_pixel(point.terms.total.y, scene.output.gamma),
+             to_pixel(point.terms.total.z, scene.output.gamma)};
+    text += "clamp to [0, 1]: " + vec(c) + "\n";
+    if (scene.output.gamma != 1.0f) text += "gamma " + num(scene.output.gamma) + "\n";
+    return text + "rgb = " + rgb_text(rgb) + "\n";
+}
+
+std::string evaluation_json(const PointEvaluation& point, const Scene& scene,
+                            Reflection reflection) {
+    const float g = scene.output.gamma;
+    return "{\"reflection\": " + json_string(std::string(to_string(reflection))) +
+           ", \"position\": " + json_vec(point.position) +
+           ", \"normal\": " + json_vec(point.normal) +
+           ", \"lights\": " + json_lights(point, scene) +
+           ", \"sum\": " + json_vec(point.terms.total) + ", \"rgb\": [" +
+           std::to_string(to_pixel(point.terms.total.x, g)) + ", " +
+           std::to_string(to_pixel(point.terms.total.y, g)) + ", " +
+           std::to_string(to_pixel(point.terms.total.z, g)) + "]}";
+}
+
+}  // namespace litkit
