@@ -109,6 +109,37 @@ TEST_F(Cli, UnknownOptionIsAUsageError) {
     EXPECT_EQ(run_cli("", dir).status, 2);
 }
 
+TEST_F(Cli, AloneItPrintsTheCommandsAndExits2) {
+    CliRun run = run_cli("", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("usage: litkit COMMAND"), std::string::npos) << run.output;
+    for (const char* command : {"render", "check", "init", "export", "compare", "explain",
+                                "turntable", "bench"})
+        EXPECT_NE(run.output.find("  " + std::string(command) + " "), std::string::npos) << command;
+}
+
+TEST_F(Cli, MisspeltCommandGetsASuggestion) {
+    CliRun run = run_cli("rendr", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("error: 'rendr' is not a litkit command; did you mean 'render'?"),
+              std::string::npos)
+        << run.output;
+    CliRun far = run_cli("paint", dir);
+    EXPECT_EQ(far.status, 2);
+    EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << far.output;
+}
+
+TEST_F(Cli, MisspeltOptionGetsASuggestion) {
+    CliRun run = run_cli("render --widht 64", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("unknown option '--widht'; did you mean '--width'?"), std::string::npos)
+        << run.output;
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+    CliRun compare = run_cli("compare --no-label", dir);
+    EXPECT_EQ(compare.status, 2);
+    EXPECT_NE(compare.output.find("did you mean '--no-labels'?"), std::string::npos) << compare.output;
+}
+
 TEST_F(Cli, BadOptionValuesAreUsageErrors) {
     EXPECT_EQ(run_cli("render --width 0", dir).status, 2);
     EXPECT_EQ(run_cli("render --width 20000", dir).status, 2);

@@ -26,6 +26,7 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
+#include "usage.hpp"
 
 namespace {
 
@@ -591,8 +592,7 @@ int main(int argc, char** argv) {
 
     ExplainArguments explain_arguments;
     CLI::App* explain = app.add_subcommand(
-        "explain", "How a pixel of litkit render got its value, step by step; or the equations "
-                   "at a point of your choosing (--at, --normal)");
+        "explain", "How a pixel got its value, step by step; or the equations at a point (--at)");
     add_scene_options(explain, explain_arguments.scene);
     explain->add_option("--pixel", explain_arguments.pixel, "The pixel X,Y (0,0: top left)")
         ->delimiter(',')
@@ -632,12 +632,15 @@ int main(int argc, char** argv) {
     bench->add_option("--frames", bench_arguments.frames, "Frames to time (after one warm-up)")
         ->check(CLI::Range(1, 100000));
 
+    if (const auto status = litkit_cli::check_command(app, argc, argv)) return *status;
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& success) {
         return app.exit(success);
     } catch (const CLI::ParseError& error) {
         app.exit(error);
+        const std::string suggestion = litkit_cli::option_suggestion(app, argc, argv);
+        if (!suggestion.empty()) std::cerr << "hint: " << suggestion << "\n";
         return exit_invalid;
     }
 
