@@ -206,6 +206,44 @@ protected:
         return run("cd " + quoted(dir) + " && '" LITKIT_CLI "' " + arguments);
     }
 
+    // Exports `<name>.toml` as a C++ program, builds it (no warnings under
+    // -Wall -Wextra -Wpedantic), runs it, and compares its picture with
+    // `litkit render --backend gl` (the same OpenGL code on the same driver:
+    // equal) and with the CPU backend (docs/spec.md's picture: within the
+    // cross-backend tolerance away from edges).
+    void expect_program_draws_what_litkit_draws(const std::string& name,
+                                                std::string& configure_output) const {
+        const Outcome exported = cli("export --format cpp " + name + ".toml -o program");
+        ASSERT_EQ(exported.status, 0) << exported.output;
+        EXPECT_NE(exported.output.find("cmake -S program -B program/build"), std::string::npos)
+            << exported.output;
+        const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
+                                      quoted(dir / "program" / "build") +
+                                      " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
+        ASSERT_EQ(configure.status, 0) << configure.output;
+        configure_output = configure.output;
+        const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
+        ASSERT_EQ(build.status, 0) << build.output;
+        EXPECT_EQ(build.output.find("warning"), std::string::npos) << build.output;
+
+        const Outcome drawn =
+            run("cd " + quoted(dir) + " && program/build/" + name + " -o exported.png");
+        ASSERT_EQ(drawn.status, 0) << drawn.output;
+        ASSERT_EQ(cli("render " + name + ".toml --backend gl -o gl.png").status, 0);
+        ASSERT_EQ(cli("render " + name + ".toml -o cpu.png").status, 0);
+
+        const litkit::Image exported_png = litkit::read_png(dir / "exported.png");
+        ASSERT_EQ(exported_png.width, 320);
+        ASSERT_EQ(exported_png.height, 240);
+        EXPECT_EQ(exported_png.rgb, litkit::read_png(dir / "gl.png").rgb);
+        const fs::path scene_file = dir / (name + ".toml");
+        const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
+        const litkit_test::Agreement a = litkit_test::agreement(
+            exported_png, litkit::read_png(dir / "cpu.png"), litkit_test::labels(scene));
+        EXPECT_GT(a.counted, 320u * 240u / 10);
+        EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
+    }
+
     fs::path dir;
 };
 
@@ -256,63 +294,15 @@ TEST_F(Export, GlslTheValidatorRejectsABrokenShader) {
 }
 
 TEST_F(Export, CppProgramOfTheNewModelsDrawsWhatLitkitDraws) {
-    const Outcome exported = cli("export --format cpp family.toml -o program");
-    ASSERT_EQ(exported.status, 0) << exported.output;
-    const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
-                                  quoted(dir / "program" / "build") +
-                                  " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
-    ASSERT_EQ(configure.status, 0) << configure.output;
-    const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
-    ASSERT_EQ(build.status, 0) << build.output;
-    const Outcome drawn = run("cd " + quoted(dir) + " && program/build/family -o exported.png");
-    ASSERT_EQ(drawn.status, 0) << drawn.output;
-    ASSERT_EQ(cli("render family.toml --backend gl -o gl.png").status, 0);
-    ASSERT_EQ(cli("render family.toml -o cpu.png").status, 0);
-    const litkit::Image exported_png = litkit::read_png(dir / "exported.png");
-    EXPECT_EQ(exported_png.rgb, litkit::read_png(dir / "gl.png").rgb);
-    const fs::path scene_file = dir / "family.toml";
-    const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
-    const litkit_test::Agreement a = litkit_test::agreement(
-        exported_png, litkit::read_png(dir / "cpu.png"), litkit_test::labels(scene));
-    EXPECT_GT(a.counted, 320u * 240u / 10);
-    EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
+    std::string configure_output;
+    ASSERT_NO_FATAL_FAILURE(expect_program_draws_what_litkit_draws("family", configure_output));
 }
 
 TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
-    const Outcome exported = cli("export --format cpp mixed.toml -o program");
-    ASSERT_EQ(exported.status, 0) << exported.output;
-    EXPECT_NE(exported.output.find("cmake -S program -B program/build"), std::string::npos)
-        << exported.output;
+    std::string configure_output;
+    ASSERT_NO_FATAL_FAILURE(expect_program_draws_what_litkit_draws("mixed", configure_output));
     EXPECT_TRUE(fs::exists(dir / "program" / "main.cpp"));
     EXPECT_TRUE(fs::exists(dir / "program" / "CMakeLists.txt"));
-
-    const Outcome configure = run("'" LITKIT_CMAKE "' -S " + quoted(dir / "program") + " -B " +
-                              quoted(dir / "program" / "build") +
-                              " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
-    ASSERT_EQ(configure.status, 0) << configure.output;
-    const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
-    ASSERT_EQ(build.status, 0) << build.output;
-    EXPECT_EQ(build.output.find("warning"), std::string::npos) << build.output;
-
-    const Outcome drawn = run("cd " + quoted(dir) + " && program/build/mixed -o exported.png");
-    ASSERT_EQ(drawn.status, 0) << drawn.output;
-    ASSERT_EQ(cli("render mixed.toml --backend gl -o gl.png").status, 0);
-    ASSERT_EQ(cli("render mixed.toml -o cpu.png").status, 0);
-
-    const litkit::Image exported_png = litkit::read_png(dir / "exported.png");
-    const litkit::Image gl_png = litkit::read_png(dir / "gl.png");
-    const litkit::Image cpu_png = litkit::read_png(dir / "cpu.png");
-    ASSERT_EQ(exported_png.width, 320);
-    ASSERT_EQ(exported_png.height, 240);
-    // The same OpenGL code on the same driver: the very same picture.
-    EXPECT_EQ(exported_png.rgb, gl_png.rgb);
-    // And the picture docs/spec.md defines, as the CPU backend draws it.
-    const fs::path scene_file = dir / "mixed.toml";
-    const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
-    const litkit_test::Agreement a =
-        litkit_test::agreement(exported_png, cpu_png, litkit_test::labels(scene));
-    EXPECT_GT(a.counted, 320u * 240u / 10);
-    EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
 
     // Usage errors get exit status 2.
     EXPECT_EQ(run(quoted(dir / "program" / "build" / "mixed") + " --bogus").status, 2);
@@ -320,7 +310,7 @@ TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {
     // --window: built with SDL2 (installed by scripts/install-deps.sh), shown
     // on a virtual X display for two seconds, then closed the way a window
     // manager would end it (SIGTERM, which SDL turns into a quit event).
-    EXPECT_EQ(configure.output.find("SDL2 not found"), std::string::npos) << configure.output;
+    EXPECT_EQ(configure_output.find("SDL2 not found"), std::string::npos) << configure_output;
     const Outcome window = run("xvfb-run -a -s '-screen 0 640x480x24' sh -c '" +
                                (dir / "program" / "build" / "mixed").string() +
                                " --window & pid=$!; sleep 2; kill -TERM $pid; wait $pid'");
