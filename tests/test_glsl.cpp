@@ -30,6 +30,7 @@
 
 #include "../src/codegen/glsl_expr.hpp"
 #include "litkit/equations.hpp"
+#include "litkit/error.hpp"
 #include "litkit/glsl.hpp"
 #include "litkit/lighting.hpp"
 
@@ -90,9 +91,9 @@ TEST(GlslExpr, LiteralsReadBackExactly) {
 
 TEST(GlslExpr, NonFiniteLiteralsAreRejected) {
     EXPECT_THROW(litkit::glsl::float_literal(std::numeric_limits<float>::infinity()),
-                 std::invalid_argument);
+                 litkit::ArgumentError);
     EXPECT_THROW(litkit::glsl::float_literal(std::numeric_limits<float>::quiet_NaN()),
-                 std::invalid_argument);
+                 litkit::ArgumentError);
 }
 
 TEST(GlslExpr, ParenthesesOnlyWherePrecedenceOrOrderNeedsThem) {
@@ -757,9 +758,9 @@ TEST(GlslNumeric, UnitVector) {
 
 TEST(GlslGenerate, RejectsACapacityBelowOne) {
     EXPECT_THROW(litkit::glsl::generate(Reflection::Phong, Shading::Phong, 0),
-                 std::invalid_argument);
+                 litkit::ArgumentError);
     EXPECT_THROW(litkit::glsl::generate(Reflection::Lambert, Shading::Flat, -3),
-                 std::invalid_argument);
+                 litkit::ArgumentError);
 }
 
 TEST(GlslGenerate, EachReflectionModelHasItsOwnTerms) {

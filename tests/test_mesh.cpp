@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "litkit/error.hpp"
 #include "litkit/mesh.hpp"
 
 namespace {
@@ -294,7 +295,7 @@ TEST(VertexNormals, IndexOutOfRangeThrows) {
     Mesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.triangles = {{0, 1, 3}};
-    EXPECT_THROW(vertex_normals(mesh), std::out_of_range);
+    EXPECT_THROW(vertex_normals(mesh), litkit::ArgumentError);
 }
 
 TEST(Bounds, AreTheSmallestAndLargestCoordinates) {

@@ -1,6 +1,7 @@
 // Scene files (docs/spec.md §5, §6): parsing, defaults, merging, located diagnostics,
 // and the object transform of docs/spec.md §2.
 #include "litkit/scene.hpp"
+#include "litkit/shapes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace litkit {
@@ -980,3 +982,27 @@ TEST(DefaultScene, HasOneCubeOnePointLightAtTheCentreAndPhong) {
 
 }  // namespace
 }  // namespace litkit
+
+// One catch for every error the library throws (issue 15): litkit::Error,
+// with the place of the first problem.
+TEST(Errors, EveryLibraryErrorIsALitkitErrorWithItsPlace) {
+    static_assert(std::is_base_of_v<litkit::Error, litkit::SceneError>);
+    static_assert(std::is_base_of_v<litkit::Error, litkit::IoError>);
+    static_assert(std::is_base_of_v<litkit::Error, litkit::ArgumentError>);
+    try {
+        litkit::parse_scene("[room]\nwidth = 10\nheight = 10\ndepth = 10\n[observer]\nposition = [0, 0, 99]\n",
+                    "bad.toml");
+        FAIL() << "no error";
+    } catch (const litkit::Error& error) {
+        EXPECT_EQ(error.location().to_string(), "bad.toml:6:12");
+        EXPECT_EQ(std::string(error.what()).rfind("bad.toml:6:12: error: ", 0), 0u) << error.what();
+    }
+    try {
+        litkit::parse_scene("[room\n", "text.toml");
+        FAIL() << "no error";
+    } catch (const litkit::Error& error) {
+        EXPECT_EQ(error.location().file, "text.toml");
+        EXPECT_EQ(error.location().line, 1u);
+    }
+    EXPECT_THROW(litkit::make_sphere(0.0f, 8, 4), litkit::Error);
+}

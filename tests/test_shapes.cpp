@@ -141,9 +141,9 @@ TEST(Cube, VertexNormalsPointAlongTheDiagonals) {
 }
 
 TEST(Cube, NonPositiveSizeThrows) {
-    EXPECT_THROW(litkit::make_cube(0.0f), std::invalid_argument);
-    EXPECT_THROW(litkit::make_cube(-1.0f), std::invalid_argument);
-    EXPECT_THROW(litkit::make_cube(std::nanf("")), std::invalid_argument);
+    EXPECT_THROW(litkit::make_cube(0.0f), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_cube(-1.0f), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_cube(std::nanf("")), litkit::ArgumentError);
 }
 
 // ---------------------------------------------------------------- sphere
@@ -239,10 +239,10 @@ TEST(Sphere, VertexNormalsAreRadialAt64Segments) {
 }
 
 TEST(Sphere, OutOfRangeArgumentsThrow) {
-    EXPECT_THROW(litkit::make_sphere(0.0f, 8, 4), std::invalid_argument);
-    EXPECT_THROW(litkit::make_sphere(-1.0f, 8, 4), std::invalid_argument);
-    EXPECT_THROW(litkit::make_sphere(1.0f, 2, 4), std::invalid_argument);
-    EXPECT_THROW(litkit::make_sphere(1.0f, 8, 1), std::invalid_argument);
+    EXPECT_THROW(litkit::make_sphere(0.0f, 8, 4), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_sphere(-1.0f, 8, 4), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_sphere(1.0f, 2, 4), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_sphere(1.0f, 8, 1), litkit::ArgumentError);
 }
 
 // ---------------------------------------------------------------- torus
@@ -274,11 +274,11 @@ TEST(Torus, IsClosedAndEnclosesItsVolumeWindingOutward) {
 }
 
 TEST(Torus, OutOfRangeArgumentsThrow) {
-    EXPECT_THROW(litkit::make_torus(0.0f, 0.25f, 8, 8), std::invalid_argument);
-    EXPECT_THROW(litkit::make_torus(1.0f, 0.0f, 8, 8), std::invalid_argument);
-    EXPECT_THROW(litkit::make_torus(1.0f, 1.0f, 8, 8), std::invalid_argument);
-    EXPECT_THROW(litkit::make_torus(1.0f, 0.25f, 2, 8), std::invalid_argument);
-    EXPECT_THROW(litkit::make_torus(1.0f, 0.25f, 8, 2), std::invalid_argument);
+    EXPECT_THROW(litkit::make_torus(0.0f, 0.25f, 8, 8), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_torus(1.0f, 0.0f, 8, 8), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_torus(1.0f, 1.0f, 8, 8), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_torus(1.0f, 0.25f, 2, 8), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_torus(1.0f, 0.25f, 8, 2), litkit::ArgumentError);
 }
 
 // ---------------------------------------------------------------- teapot
@@ -450,8 +450,8 @@ TEST(Teapot, EnclosesAPositiveVolume) {
 }
 
 TEST(Teapot, OutOfRangeArgumentsThrow) {
-    EXPECT_THROW(litkit::make_teapot(0.0f, 10), std::invalid_argument);
-    EXPECT_THROW(litkit::make_teapot(1.0f, 0), std::invalid_argument);
+    EXPECT_THROW(litkit::make_teapot(0.0f, 10), litkit::ArgumentError);
+    EXPECT_THROW(litkit::make_teapot(1.0f, 0), litkit::ArgumentError);
 }
 
 // ---------------------------------------------------------------- OBJ files

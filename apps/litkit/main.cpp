@@ -333,7 +333,7 @@ int run_export(const ExportArguments& arguments) {
     } catch (const litkit::IoError& error) {
         if (error.reason() != "already exists") throw;
         throw UsageError{"'" + error.path() + "' already exists; pass --force to replace it"};
-    } catch (const std::invalid_argument& error) {
+    } catch (const litkit::ArgumentError& error) {
         throw UsageError{error.what()};
     }
     for (const fs::path& file : written) std::cout << "litkit: wrote " << file.string() << "\n";

@@ -32,9 +32,30 @@ struct Diagnostic {
     std::string to_string() const;
 };
 
+// The one base of every error litkit throws, so that one `catch` reports them
+// all: what() is the one-line (for SceneError, one line per problem)
+// diagnostic that `litkit check` prints, and location() says where, when
+// there is a place ("scene.toml:14:12"; empty otherwise).
+class Error : public std::runtime_error {
+public:
+    explicit Error(const std::string& what, FileLoc location = {});
+    const FileLoc& location() const noexcept { return location_; }
+
+private:
+    FileLoc location_;
+};
+
+// A function of the library was called with arguments outside its contract
+// (a sphere of radius 0, a pixel outside the image, a light capacity of 0).
+class ArgumentError : public Error {
+public:
+    using Error::Error;
+};
+
 // Invalid input: the scene (or a value given on the command line) breaks a
-// rule. Holds every problem found, not just the first. CLI exit status 2.
-class SceneError : public std::runtime_error {
+// rule. Holds every problem found, not just the first; location() is the
+// first one's. CLI exit status 2.
+class SceneError : public Error {
 public:
     // `warnings` are those found alongside the errors, kept apart so that
     // diagnostics() holds exactly the errors.
@@ -50,19 +71,17 @@ private:
 // A file could not be read or written (missing, unreadable, not UTF-8, not
 // TOML, disk full). CLI exit status 1. `location` is set when the failure has
 // a place, such as a TOML syntax error.
-class IoError : public std::runtime_error {
+class IoError : public Error {
 public:
     enum class Access { Read, Write };
     IoError(std::string path, std::string reason, FileLoc location = {},
             Access access = Access::Read);
     const std::string& path() const noexcept { return path_; }
     const std::string& reason() const noexcept { return reason_; }
-    const FileLoc& location() const noexcept { return location_; }
 
 private:
     std::string path_;
     std::string reason_;
-    FileLoc location_;
 };
 
 }  // namespace litkit

@@ -49,7 +49,7 @@ struct PixelExplanation {
 
 // Renders the scene (CPU backend) and explains pixel (x, y). Objects' and
 // [lighting]'s models as `render` uses them; `options` as for render.
-// Throws std::out_of_range for a pixel outside the image.
+// Throws ArgumentError for a pixel outside the image.
 PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOptions& options = {});
 
 // The equations at point p with normal N (normalised here; it must not be

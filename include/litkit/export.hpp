@@ -36,7 +36,7 @@ std::vector<std::filesystem::path> export_glsl(const Scene& scene,
 // OpenGL 3.3 on a headless EGL context and writes a PNG, or shows it in a
 // window with --window (built where SDL2 is found). `scene_label` names the
 // scene in the program's comments. Returns the paths written; throws IoError
-// (also for an unreadable mesh file) or std::invalid_argument for a bad
+// (also for an unreadable mesh file) or ArgumentError for a bad
 // program name.
 std::vector<std::filesystem::path> export_cpp(const Scene& scene,
                                               const std::filesystem::path& directory,

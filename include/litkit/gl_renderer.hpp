@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "litkit/error.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
@@ -18,9 +19,9 @@ namespace litkit {
 // No OpenGL could be had (no EGL library, no display, no 3.3 context), or it
 // failed (a shader the driver rejects, an incomplete framebuffer); what()
 // says which and why.
-class GlError : public std::runtime_error {
+class GlError : public Error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit GlError(const std::string& what) : Error(what) {}
 };
 
 class GlRenderer {

@@ -25,7 +25,7 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 // 1e-6 × the bounding-box diagonal count as one (transitively: a chain of such
 // positions is one vertex). Zero-area triangles take no part, nor do
 // triangles two of whose corners count as one. A position touched by no
-// usable triangle gets the zero vector. O(n log n); throws std::out_of_range
+// usable triangle gets the zero vector. O(n log n); throws ArgumentError
 // for a triangle index beyond the positions.
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
 

@@ -57,7 +57,7 @@ public:
     void render_into(Image& image);
 
     // Draws one frame and reports how pixel (x, y) got its value. Throws
-    // std::out_of_range outside the image.
+    // ArgumentError outside the image.
     PixelProbe probe(int x, int y);
 
     std::size_t triangle_count() const;

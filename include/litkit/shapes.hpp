@@ -1,6 +1,6 @@
 // Built-in shapes and mesh files (docs/spec.md §2), in local coordinates. Built-in
 // meshes are closed where the shape is and wind counter-clockwise seen from
-// outside. The make_ functions throw std::invalid_argument for arguments out
+// outside. The make_ functions throw ArgumentError for arguments out
 // of range (sizes not positive, segments or sides below 3, rings below 2,
 // subdivisions below 1, a torus's minor radius not below its major radius).
 #pragma once

@@ -328,10 +328,10 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
                                  const std::string& program_name, const std::string& scene_label,
                                  const ExportOptions& options) {
     if (!is_identifier(program_name))
-        throw std::invalid_argument("program name '" + program_name +
+        throw ArgumentError("program name '" + program_name +
                                     "' is not a C identifier (letters, digits, _)");
     if (is_reserved_by_cmake(program_name))
-        throw std::invalid_argument("program name '" + program_name +
+        throw ArgumentError("program name '" + program_name +
                                     "' is a target name CMake keeps for itself; choose another");
     const ObjectModels models = object_models(scene, options);
     const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first

@@ -1,4 +1,5 @@
 #include "litkit/glsl.hpp"
+#include "litkit/error.hpp"
 
 #include <string>
 #include <utility>
@@ -392,7 +393,7 @@ const char* const to_pixel_function =
 
 Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
     if (light_capacity < 1) {
-        throw std::invalid_argument("glsl::generate: the light capacity must be at least 1, not " +
+        throw ArgumentError("glsl::generate: the light capacity must be at least 1, not " +
                                     std::to_string(light_capacity));
     }
     Shaders shaders;

@@ -1,6 +1,7 @@
 // glsl::Expr (codegen/glsl_expr.hpp): building the expression graph, printing
 // it as GLSL, and evaluating it (for tests).
 #include "codegen/glsl_expr.hpp"
+#include "litkit/error.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -122,7 +123,7 @@ equations::MaterialT<Expr> material_variable(const std::string& name) {
 
 std::string float_literal(float value) {
     if (!std::isfinite(value)) {
-        throw std::invalid_argument("GLSL has no literal for " + std::to_string(value));
+        throw litkit::ArgumentError("GLSL has no literal for " + std::to_string(value));
     }
     // The shortest text that reads back as `value`.
     char buffer[64];

@@ -1,5 +1,7 @@
 #include "litkit/error.hpp"
 
+#include <utility>
+
 namespace litkit {
 
 std::string FileLoc::to_string() const {
@@ -29,17 +31,19 @@ std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
 }
 }  // namespace
 
+Error::Error(const std::string& what, FileLoc location)
+    : std::runtime_error(what), location_(std::move(location)) {}
+
 SceneError::SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings)
-    : std::runtime_error(join_diagnostics(diagnostics)),
+    : Error(join_diagnostics(diagnostics), diagnostics.empty() ? FileLoc{} : diagnostics.front().location),
       diagnostics_(std::move(diagnostics)),
       warnings_(std::move(warnings)) {}
 
 IoError::IoError(std::string path, std::string reason, FileLoc location, Access access)
-    : std::runtime_error((location.line > 0 ? location.to_string() + ": " : std::string()) +
-                         "error: cannot " + (access == Access::Read ? "read" : "write") + " '" +
-                         path + "': " + reason),
+    : Error((location.line > 0 ? location.to_string() + ": " : std::string()) + "error: cannot " +
+                (access == Access::Read ? "read" : "write") + " '" + path + "': " + reason,
+            location),
       path_(std::move(path)),
-      reason_(std::move(reason)),
-      location_(std::move(location)) {}
+      reason_(std::move(reason)) {}
 
 }  // namespace litkit

@@ -73,14 +73,14 @@ bool encode_png(const Image& image, int level, PngWriteState& state) {
 std::string encode_png(const Image& image, int compression_level) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-        throw std::invalid_argument("encode_png: image has no pixels or an inconsistent size");
+        throw ArgumentError("encode_png: image has no pixels or an inconsistent size");
     }
     PngWriteState state;
     state.bytes.reserve(image.rgb.size() / 4 + 1024);
     if (compression_level < 0 || compression_level > 9)
-        throw std::invalid_argument("encode_png: compression level must be 0-9");
+        throw ArgumentError("encode_png: compression level must be 0-9");
     if (!encode_png(image, compression_level, state)) {
-        throw std::runtime_error("PNG encoding failed: " +
+        throw Error("PNG encoding failed: " +
                                  (state.error.empty() ? std::string("out of memory") : state.error));
     }
     return std::move(state.bytes);

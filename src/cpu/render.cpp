@@ -9,6 +9,7 @@
 //   fragment  depth test, perspective-correct varyings, lighting per pixel
 //             (Phong) or interpolated colours (Gouraud) or one colour (flat)
 #include "litkit/render.hpp"
+#include "litkit/error.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -694,7 +695,7 @@ void Renderer::render_into(Image& image) {
 PixelProbe Renderer::probe(int x, int y) {
     const OutputSettings& output = impl_->scene.output;
     if (x < 0 || y < 0 || x >= output.width || y >= output.height) {
-        throw std::out_of_range("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+        throw ArgumentError("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                                 ") is outside the " + std::to_string(output.width) + "x" +
                                 std::to_string(output.height) + " image");
     }

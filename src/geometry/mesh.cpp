@@ -1,4 +1,5 @@
 #include "litkit/mesh.hpp"
+#include "litkit/error.hpp"
 
 #include <algorithm>
 #include <array>
@@ -324,7 +325,7 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
     for (const auto& triangle : mesh.triangles) {
         for (const std::uint32_t corner : triangle) {
             if (corner >= position_count) {
-                throw std::out_of_range("vertex_normals: triangle index " + std::to_string(corner) +
+                throw ArgumentError("vertex_normals: triangle index " + std::to_string(corner) +
                                         " out of range (" + std::to_string(position_count) +
                                         " positions)");
             }

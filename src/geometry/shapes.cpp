@@ -1,6 +1,7 @@
 // Built-in shapes (docs/spec.md §2). Scene validation checks the parameters first
 // (docs/spec.md §6); the checks here are a guard for callers of the library.
 #include "litkit/shapes.hpp"
+#include "litkit/error.hpp"
 
 #include <array>
 #include <cmath>
@@ -18,14 +19,14 @@ namespace {
 
 void require_positive(const char* function, const char* name, float value) {
     if (!(value > 0.0f) || !std::isfinite(value)) {
-        throw std::invalid_argument(std::string(function) + ": " + name +
+        throw ArgumentError(std::string(function) + ": " + name +
                                     " must be a positive number, got " + std::to_string(value));
     }
 }
 
 void require_at_least(const char* function, const char* name, int value, int minimum) {
     if (value < minimum) {
-        throw std::invalid_argument(std::string(function) + ": " + name + " must be at least " +
+        throw ArgumentError(std::string(function) + ": " + name + " must be at least " +
                                     std::to_string(minimum) + ", got " + std::to_string(value));
     }
 }
@@ -157,7 +158,7 @@ Mesh make_torus(float major_radius, float minor_radius, int segments, int sides)
     if (!(minor_radius < major_radius)) {
         // docs/spec.md §6: a thicker tube would pass through the axis and the surface
         // would cross itself.
-        throw std::invalid_argument("make_torus: minor_radius (" + std::to_string(minor_radius) +
+        throw ArgumentError("make_torus: minor_radius (" + std::to_string(minor_radius) +
                                     ") must be below major_radius (" +
                                     std::to_string(major_radius) + ")");
     }

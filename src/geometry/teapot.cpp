@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "litkit/shapes.hpp"
+#include "litkit/error.hpp"
 
 namespace litkit {
 
@@ -194,11 +195,11 @@ std::array<double, patch_order> bernstein(double t) {
 
 Mesh make_teapot(float size, int subdivisions) {
     if (!(size > 0.0f) || !std::isfinite(size)) {
-        throw std::invalid_argument("make_teapot: size must be a positive number, got " +
+        throw ArgumentError("make_teapot: size must be a positive number, got " +
                                     std::to_string(size));
     }
     if (subdivisions < 1) {
-        throw std::invalid_argument("make_teapot: subdivisions must be at least 1, got " +
+        throw ArgumentError("make_teapot: subdivisions must be at least 1, got " +
                                     std::to_string(subdivisions));
     }
 

@@ -1,6 +1,7 @@
 // litkit compare: the scene under every reflection × shading pair, one tile
 // each, with the models' names in a margin.
 #include "litkit/compare.hpp"
+#include "litkit/error.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -49,7 +50,7 @@ CompareGrid compare_models(const Scene& scene, const CompareOptions& options) {
     grid.tile_height =
         options.tile_height > 0 ? options.tile_height : std::max(1, scene.output.height / 2);
     if (grid.tile_width > 16384 || grid.tile_height > 16384)
-        throw std::invalid_argument("compare_models: tiles are at most 16384 pixels a side");
+        throw ArgumentError("compare_models: tiles are at most 16384 pixels a side");
 
     const Reflection own_reflection = scene.reflection.value_or(options.fallback_reflection);
     const Shading own_shading = scene.shading.value_or(options.fallback_shading);
@@ -85,7 +86,7 @@ CompareGrid compare_models(const Scene& scene, const CompareOptions& options) {
     const long long width = grid.left_margin + static_cast<long long>(columns) * grid.tile_width;
     const long long height = grid.top_margin + static_cast<long long>(rows) * grid.tile_height;
     if (width > 65535 || height > 65535)
-        throw std::invalid_argument("compare_models: the grid would be " + std::to_string(width) +
+        throw ArgumentError("compare_models: the grid would be " + std::to_string(width) +
                                     "x" + std::to_string(height) +
                                     " pixels; make the tiles smaller");
     grid.image = Image(static_cast<int>(width), static_cast<int>(height));

@@ -1,6 +1,7 @@
 // litkit explain: the renderer's own record of a pixel (Renderer::probe),
 // with the equations evaluated again, term by term, where it evaluated them.
 #include "litkit/explain.hpp"
+#include "litkit/error.hpp"
 
 #include <glm/geometric.hpp>
 #include <stdexcept>
@@ -99,7 +100,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
 PointEvaluation explain_point(const Scene& scene, Reflection reflection, const Material& material,
                               const glm::vec3& position, const glm::vec3& normal) {
     if (glm::dot(normal, normal) == 0.0f)
-        throw std::invalid_argument("explain_point: the normal must not be the zero vector");
+        throw ArgumentError("explain_point: the normal must not be the zero vector");
     return evaluate(reflection, material, scene_lights(scene), position, unit(normal),
                     scene.observer.position);
 }
