@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "litkit/equations.hpp"
+#include "litkit/error.hpp"
 #include "litkit/lighting.hpp"
 
 namespace {
@@ -1296,4 +1297,21 @@ TEST(ShadeTerms, ShowTheModelsIntermediateValues) {
     EXPECT_NEAR(intermediate(gooch, "warm.g"), 0.4f, 1e-6f);
     // The classic models have none.
     EXPECT_TRUE(terms_of(Reflection::Phong, from_above, {0, 5, 0}).intermediates.empty());
+}
+
+TEST(Shade, RefusesANormalThatIsNotUnitLength) {
+    const Light light = point_light({0, 2, 0});
+    const std::span<const Light> lights(&light, 1);
+    EXPECT_THROW(litkit::shade(Reflection::Phong, Material{}, lights, origin, {0, 2, 0}, {0, 5, 0}),
+                 litkit::ArgumentError);
+    EXPECT_THROW(litkit::shade(Reflection::Phong, Material{}, lights, origin, {0, 0, 0}, {0, 5, 0}),
+                 litkit::ArgumentError);
+    EXPECT_THROW(litkit::shade_terms(Reflection::Phong, Material{}, lights, origin, {0, 0.9f, 0},
+                                     {0, 5, 0}),
+                 litkit::ArgumentError);
+    EXPECT_THROW(litkit::shade(Reflection::Phong, Material{}, lights, origin, up, origin),
+                 litkit::ArgumentError);
+    // Within the tolerance (1e-3) it is used as given.
+    EXPECT_NO_THROW(
+        litkit::shade(Reflection::Phong, Material{}, lights, origin, {0, 1.0005f, 0}, {0, 5, 0}));
 }

@@ -127,8 +127,10 @@ struct Light {
 // The colour I at surface point `position` with unit normal `normal`, seen
 // from `eye`, before clamping and gamma (docs/spec.md §4):
 //   I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S).
-// `normal` must be unit length; it is used as given (the shading model
-// decides which normal that is).
+// `normal` must be unit length (within 1e-3: the shading model decides which
+// normal that is, and a normal of another length would scale D and S);
+// throws ArgumentError otherwise, and for an eye at `position`. Light
+// directions need not be unit: they are normalised.
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
                 const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye);
 

@@ -4,10 +4,12 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "litkit/equations.hpp"
+#include "litkit/error.hpp"
 
 namespace litkit {
 
@@ -118,9 +120,24 @@ glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lig
 
 }  // namespace equations
 
+namespace {
+
+// shade()'s contract: a unit normal, and an eye that is not the point itself.
+void check_point(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye) {
+    const float length = glm::length(normal);
+    if (!(std::abs(length - 1.0f) <= 1e-3f)) {
+        throw ArgumentError("shade: the normal must be a unit vector, but its length is " +
+                            std::to_string(length) + " (normalise it first)");
+    }
+    if (eye == position) throw ArgumentError("shade: the eye is at the point being shaded");
+}
+
+}  // namespace
+
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
                 const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye) {
     using namespace equations;
+    check_point(position, normal, eye);
     std::vector<PreparedLight> prepared;
     prepared.reserve(lights.size());
     for (const Light& light : lights) prepared.push_back(prepare_light(light));
@@ -170,6 +187,7 @@ ShadeTerms shade_terms(Reflection reflection, const Material& material,
                        std::span<const Light> lights, const glm::vec3& position,
                        const glm::vec3& normal, const glm::vec3& eye) {
     using namespace equations;
+    check_point(position, normal, eye);
     std::vector<PreparedLight> prepared;
     prepared.reserve(lights.size());
     for (const Light& light : lights) prepared.push_back(prepare_light(light));
