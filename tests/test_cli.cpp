@@ -140,6 +140,13 @@ TEST_F(Cli, MisspeltOptionGetsASuggestion) {
     EXPECT_NE(compare.output.find("did you mean '--no-labels'?"), std::string::npos) << compare.output;
 }
 
+TEST_F(Cli, ThreadsWithTheOpenGlBackendIsRefusedNotIgnored) {
+    CliRun run = run_cli("render --backend gl --threads 2", dir);
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("--threads applies to the CPU backend"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+}
+
 TEST_F(Cli, BadOptionValuesAreUsageErrors) {
     EXPECT_EQ(run_cli("render --width 0", dir).status, 2);
     EXPECT_EQ(run_cli("render --width 20000", dir).status, 2);

@@ -43,7 +43,7 @@ struct SceneArguments {
     std::optional<int> height;
     std::optional<std::string> reflection;
     std::optional<std::string> shading;
-    int threads = 0;
+    std::optional<int> threads;  // CPU backend only; none: one per core
     std::string backend = "cpu";
 };
 
@@ -121,7 +121,7 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
 class Backend {
 public:
     Backend(const litkit::Scene& scene, const SceneArguments& arguments) {
-        const litkit::RenderOptions options{.threads = arguments.threads};
+        const litkit::RenderOptions options{.threads = arguments.threads.value_or(0)};
         if (arguments.backend == "gl")
             gl_ = std::make_unique<litkit::GlRenderer>(scene, options);
         else
@@ -218,6 +218,12 @@ std::vector<fs::path> inputs_of(const litkit::Scene& scene, const std::vector<st
 
 // The scene with the command line's replacements of [output] and [lighting].
 litkit::Scene load(const SceneArguments& arguments) {
+    if (arguments.backend == "gl" && arguments.threads) {
+        // OpenGL decides its own parallelism (a GPU's cores, or llvmpipe's
+        // LP_NUM_THREADS): say so rather than ignore the option.
+        throw UsageError{"--threads applies to the CPU backend; with --backend gl the driver "
+                         "chooses (for Mesa's llvmpipe, set LP_NUM_THREADS)"};
+    }
     litkit::Scene scene = load(arguments.scenes);
     if (arguments.width) scene.output.width = *arguments.width;
     if (arguments.height) scene.output.height = *arguments.height;
@@ -381,7 +387,7 @@ int run_compare(const CompareArguments& arguments) {
                    : arguments.vary == "shading"  ? litkit::CompareOptions::Vary::Shading
                                                   : litkit::CompareOptions::Vary::Both;
     options.labels = !arguments.no_labels;
-    options.threads = arguments.scene.threads;
+    options.threads = arguments.scene.threads.value_or(0);
     const auto start = std::chrono::steady_clock::now();
     const litkit::CompareGrid grid = litkit::compare_models(scene, options);
     litkit::write_png(grid.image, output);
@@ -417,7 +423,7 @@ int run_explain(const ExplainArguments& arguments) {
                              std::to_string(scene.output.height) + " image"};
         }
         litkit::RenderOptions options;
-        options.threads = arguments.scene.threads;
+        options.threads = arguments.scene.threads.value_or(0);
         const litkit::PixelExplanation explanation = litkit::explain_pixel(scene, x, y, options);
         std::cout << (arguments.json ? litkit::explanation_json(explanation, scene) + "\n"
                                      : litkit::explanation_text(explanation, scene));
