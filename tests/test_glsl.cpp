@@ -214,8 +214,8 @@ TEST(GlslFunctions, SpotFactorText) {
     // T c = -dot(to_light, axis_unit);
     // T width = cos_inner - cos_cutoff;
     // T t = (c - cos_cutoff) / select(width > T(0), width, T(1));
-    // T w = select(c >= cos_inner, T(1), t * t * (T(3) - T(2) * t));
-    // return select(c >= cos_cutoff, pow(max(c, T(0)), exponent) * w, T(0));
+    // T w = select(c >= cos_inner - T(slack), T(1), t * t * (T(3) - T(2) * t));
+    // return select(c >= cos_cutoff - T(slack), pow(max(c, T(0)), exponent) * w, T(0));
     const std::string text = printed(litkit::glsl::spot_factor_function());
     const std::string body =
         "float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float cos_inner, "
@@ -224,8 +224,8 @@ TEST(GlslFunctions, SpotFactorText) {
         "axis_unit.z);\n"
         "    float t0 = cos_inner - cos_cutoff;\n"
         "    float t1 = (c - cos_cutoff) / (t0 > 0.0 ? t0 : 1.0);\n"
-        "    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) * (c >= cos_inner ? 1.0 : "
-        "t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);\n"
+        "    return (c >= cos_cutoff - 1e-06 ? power(max(c, 0.0), exponent) * (c >= cos_inner - "
+        "1e-06 ? 1.0 : t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);\n"
         "}\n";
     ASSERT_GE(text.size(), body.size());
     EXPECT_EQ(text.substr(text.size() - body.size()), body);

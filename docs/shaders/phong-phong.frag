@@ -20,9 +20,9 @@
 //     Light u_lights[MAX_LIGHTS]    the fields of litkit::equations::PreparedLight:
 //                                   kind (LIGHT_*), radiance I_L, position, direction
 //                                   (unit; directional: travel, spot: axis),
-//                                   attenuation (k_c, k_l, k_q), cos_cutoff (cosine
-//                                   of the half-angle less 1e-6, so that the cone's
-//                                   boundary counts as inside), exponent
+//                                   attenuation (k_c, k_l, k_q), cos_cutoff and
+//                                   cos_inner (cosines of the cone's outer and inner
+//                                   half-angles), exponent
 //     float u_inv_gamma             1 / gamma
 //   fragment output: vec4 frag_color, the pixel value litkit defines, a multiple of
 //   1/255 (exact in RGBA8), alpha 1
@@ -132,13 +132,13 @@ Incidence point_incidence(vec3 light_position, vec3 attenuation, vec3 p) {
 // else 0; w = 1 where c >= cos_inner, else t^2(3 - 2t) with
 // t = (c - cos_cutoff)/(cos_inner - cos_cutoff) (the penumbra; no smoothstep,
 // which is undefined for equal edges). axis_unit: the normalised spot
-// direction; cos_cutoff and cos_inner as in equations::PreparedLight
-// (boundary slack included).
+// direction; cos_cutoff and cos_inner the cosines of the outer and inner
+// half-angles; the comparisons allow 1e-6 so that the cone's boundary is inside.
 float spot_factor(vec3 to_light, vec3 axis_unit, float cos_cutoff, float cos_inner, float exponent) {
     float c = -(to_light.x * axis_unit.x + to_light.y * axis_unit.y + to_light.z * axis_unit.z);
     float t0 = cos_inner - cos_cutoff;
     float t1 = (c - cos_cutoff) / (t0 > 0.0 ? t0 : 1.0);
-    return (c >= cos_cutoff ? power(max(c, 0.0), exponent) * (c >= cos_inner ? 1.0 : t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);
+    return (c >= cos_cutoff - 1e-06 ? power(max(c, 0.0), exponent) * (c >= cos_inner - 1e-06 ? 1.0 : t1 * t1 * (3.0 - 2.0 * t1)) : 0.0);
 }
 
 // The phong reflection model: the diffuse weight and colour

@@ -20,9 +20,9 @@
 //     Light u_lights[MAX_LIGHTS]    the fields of litkit::equations::PreparedLight:
 //                                   kind (LIGHT_*), radiance I_L, position, direction
 //                                   (unit; directional: travel, spot: axis),
-//                                   attenuation (k_c, k_l, k_q), cos_cutoff (cosine
-//                                   of the half-angle less 1e-6, so that the cone's
-//                                   boundary counts as inside), exponent
+//                                   attenuation (k_c, k_l, k_q), cos_cutoff and
+//                                   cos_inner (cosines of the cone's outer and inner
+//                                   half-angles), exponent
 //     float u_inv_gamma             1 / gamma
 //   fragment output: vec4 frag_color, the pixel value litkit defines, a multiple of
 //   1/255 (exact in RGBA8), alpha 1

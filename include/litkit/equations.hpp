@@ -120,6 +120,11 @@ Incidence<T> point_incidence(const Vec3<T>& light_position, const Vec3<T>& atten
     return {(T(1) / distance) * to_light, distance_attenuation(attenuation, distance)};
 }
 
+// The spot boundary is inclusive (c ≥ cos(cutoff)); this much slack in the
+// cosine keeps a point exactly on the cone inside despite float rounding. It
+// applies to the comparisons only, not to the soft edge's interpolation.
+inline constexpr float spot_boundary_slack = 1e-6f;
+
 // Spot cone: c = −L·axis; s = c^exponent · w where c ≥ cos θo (0^0 = 1), else
 // 0, with the soft edge of docs/spec.md §9.3: w = 1 where c ≥ cos θi, else
 // t²(3 − 2t), t = (c − cos θo)/(cos θi − cos θo). With penumbra 0, θi = θo and
@@ -130,8 +135,8 @@ T spot_factor(const Vec3<T>& to_light, const Vec3<T>& axis_unit, const T& cos_cu
     T c = -dot(to_light, axis_unit);
     T width = cos_inner - cos_cutoff;
     T t = (c - cos_cutoff) / select(width > T(0), width, T(1));
-    T w = select(c >= cos_inner, T(1), t * t * (T(3) - T(2) * t));
-    return select(c >= cos_cutoff, pow(max(c, T(0)), exponent) * w, T(0));
+    T w = select(c >= cos_inner - T(spot_boundary_slack), T(1), t * t * (T(3) - T(2) * t));
+    return select(c >= cos_cutoff - T(spot_boundary_slack), pow(max(c, T(0)), exponent) * w, T(0));
 }
 
 // ---- Reflection models (docs/spec.md §4, second table; IM1–IM4) ----
@@ -308,14 +313,10 @@ struct PreparedLight {
     glm::vec3 position{0.0f};     // point, spot
     glm::vec3 direction{0.0f};    // unit; directional: travel direction; spot: axis
     glm::vec3 attenuation{0.0f};  // point, spot
-    float cos_cutoff = 0.0f;      // spot: cos θo, less the slack below
-    float cos_inner = 0.0f;       // spot: cos θi (docs/spec.md §9.3), less the slack
+    float cos_cutoff = 0.0f;      // spot: cos θo
+    float cos_inner = 0.0f;       // spot: cos θi (docs/spec.md §9.3)
     float exponent = 0.0f;        // spot
 };
-
-// The spot boundary is inclusive (c ≥ cos(cutoff)); this much slack in the
-// cosine keeps a point exactly on the cone inside despite float rounding.
-inline constexpr float spot_boundary_slack = 1e-6f;
 
 PreparedLight prepare_light(const Light& light);
 

@@ -75,8 +75,8 @@ Function spot_factor_function() {
         "else 0; w = 1 where c >= cos_inner, else t^2(3 - 2t) with\n"
         "t = (c - cos_cutoff)/(cos_inner - cos_cutoff) (the penumbra; no smoothstep,\n"
         "which is undefined for equal edges). axis_unit: the normalised spot\n"
-        "direction; cos_cutoff and cos_inner as in equations::PreparedLight\n"
-        "(boundary slack included).";
+        "direction; cos_cutoff and cos_inner the cosines of the outer and inner\n"
+        "half-angles; the comparisons allow 1e-6 so that the cone's boundary is inside.";
     function.return_type = "float";
     function.name = "spot_factor";
     function.parameters =
@@ -248,9 +248,9 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "//                                   kind (LIGHT_*), radiance I_L, position, "
            "direction\n"
            "//                                   (unit; directional: travel, spot: axis),\n"
-           "//                                   attenuation (k_c, k_l, k_q), cos_cutoff (cosine\n"
-           "//                                   of the half-angle less 1e-6, so that the cone's\n"
-           "//                                   boundary counts as inside), exponent\n"
+           "//                                   attenuation (k_c, k_l, k_q), cos_cutoff and\n"
+           "//                                   cos_inner (cosines of the cone's outer and inner\n"
+           "//                                   half-angles), exponent\n"
            "//     float u_inv_gamma             1 / gamma\n"
            "//   fragment output: vec4 frag_color, the pixel value litkit defines, a multiple of\n"
            "//   1/255 (exact in RGBA8), alpha 1\n";

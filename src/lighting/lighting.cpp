@@ -95,10 +95,10 @@ PreparedLight prepare_light(const Light& light) {
                 prepared.attenuation = kind.attenuation;
                 prepared.direction = glm::normalize(kind.direction);
                 double radians = static_cast<double>(kind.cutoff_degrees) * (M_PI / 180.0);
-                prepared.cos_cutoff = static_cast<float>(std::cos(radians)) - spot_boundary_slack;
+                prepared.cos_cutoff = static_cast<float>(std::cos(radians));
                 // docs/spec.md §9.3: θi = θo·(1 − penumbra); penumbra 0 gives the hard edge.
                 double inner = radians * (1.0 - static_cast<double>(kind.penumbra));
-                prepared.cos_inner = static_cast<float>(std::cos(inner)) - spot_boundary_slack;
+                prepared.cos_inner = static_cast<float>(std::cos(inner));
                 prepared.exponent = kind.exponent;
             }
         },

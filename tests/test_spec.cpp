@@ -1,0 +1,207 @@
+// The worked examples of docs/spec.md, read from the page itself and checked
+// against the library: each ```text block that starts with "example:" gives
+// its inputs above "# results" and the values the equations give below it,
+// printed to six significant digits. A change of a number on the page, or of
+// an equation in the code, fails here.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "litkit/error.hpp"
+#include "litkit/lighting.hpp"
+
+namespace {
+
+struct Example {
+    std::string name;
+    std::map<std::string, std::vector<std::string>> inputs;
+    std::vector<std::pair<std::string, std::vector<double>>> results;  // in the page's order
+};
+
+std::vector<std::string> words(const std::string& text) {
+    std::istringstream in(text);
+    std::vector<std::string> out;
+    for (std::string word; in >> word;) out.push_back(word);
+    return out;
+}
+
+std::vector<Example> read_examples() {
+    std::ifstream in(std::string(LITKIT_SOURCE_DIR) + "/docs/spec.md");
+    std::vector<Example> examples;
+    std::string line;
+    bool in_block = false, in_results = false;
+    while (std::getline(in, line)) {
+        if (!in_block) {
+            if (line == "```text") in_block = true;
+            continue;
+        }
+        if (line == "```") {
+            in_block = in_results = false;
+            continue;
+        }
+        if (line.rfind("example: ", 0) == 0) {
+            examples.push_back({line.substr(9), {}, {}});
+            continue;
+        }
+        if (examples.empty() || !in_block) continue;
+        if (line == "# results") {
+            in_results = true;
+            continue;
+        }
+        const std::size_t equals = line.find(" = ");
+        if (equals == std::string::npos) continue;
+        const std::string key = line.substr(0, equals);
+        const std::vector<std::string> values = words(line.substr(equals + 3));
+        if (!in_results) {
+            examples.back().inputs[key] = values;
+        } else {
+            std::vector<double> numbers;
+            for (const std::string& v : values) numbers.push_back(std::stod(v));
+            examples.back().results.emplace_back(key, numbers);
+        }
+    }
+    return examples;
+}
+
+glm::vec3 vec(const std::vector<std::string>& v) {
+    return {std::stof(v.at(0)), std::stof(v.at(1)), std::stof(v.at(2))};
+}
+float number(const Example& e, const std::string& key, float otherwise) {
+    const auto found = e.inputs.find(key);
+    return found == e.inputs.end() ? otherwise : std::stof(found->second.at(0));
+}
+
+// |value − printed| within the printing's six significant digits.
+void expect_printed(double value, double printed, const std::string& what) {
+    EXPECT_NEAR(value, printed, 1e-5 * std::max(1.0, std::abs(printed))) << what;
+}
+
+}  // namespace
+
+TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
+    const std::vector<Example> examples = read_examples();
+    // A broken reader must not pass by finding nothing.
+    ASSERT_GE(examples.size(), 13u);
+    std::set<std::string> models;
+    for (const Example& e : examples) {
+        SCOPED_TRACE("docs/spec.md example '" + e.name + "'");
+        const auto reflection = litkit::parse_reflection(e.inputs.at("reflection").at(0));
+        ASSERT_TRUE(reflection);
+        models.insert(e.inputs.at("reflection").at(0));
+
+        litkit::Material material;
+        material.color = vec(e.inputs.at("color")) / 255.0f;
+        material.ka = number(e, "ka", material.ka);
+        material.kd = number(e, "kd", material.kd);
+        material.ks = number(e, "ks", material.ks);
+        material.shininess = number(e, "shininess", material.shininess);
+        litkit::for_each_model_parameter(
+            [&](const litkit::ModelParameter& parameter, float& value) {
+                value = number(e, std::string(parameter.key), value);
+            },
+            material);
+
+        const std::string type = e.inputs.at("light").at(0);
+        litkit::Light light;
+        light.intensity = number(e, "light_intensity", 1.0f);
+        litkit::SpotLight spot;
+        if (type == "directional") {
+            light.kind = litkit::DirectionalLight{vec(e.inputs.at("light_direction"))};
+        } else if (type == "point") {
+            litkit::PointLight point;
+            point.position = vec(e.inputs.at("light_position"));
+            if (e.inputs.count("light_attenuation")) point.attenuation = vec(e.inputs.at("light_attenuation"));
+            light.kind = point;
+        } else {
+            ASSERT_EQ(type, "spot");
+            spot.position = vec(e.inputs.at("light_position"));
+            spot.direction = vec(e.inputs.at("light_direction"));
+            if (e.inputs.count("light_attenuation")) spot.attenuation = vec(e.inputs.at("light_attenuation"));
+            spot.cutoff_degrees = number(e, "light_cutoff", spot.cutoff_degrees);
+            spot.exponent = number(e, "light_exponent", spot.exponent);
+            spot.penumbra = number(e, "light_penumbra", spot.penumbra);
+            light.kind = spot;
+        }
+        const glm::vec3 p = vec(e.inputs.at("point"));
+        const glm::vec3 n = vec(e.inputs.at("normal"));
+        const glm::vec3 eye = vec(e.inputs.at("eye"));
+        const float gamma = number(e, "gamma", 1.0f);
+
+        const litkit::ShadeTerms terms =
+            litkit::shade_terms(*reflection, material, std::span<const litkit::Light>(&light, 1), p, n, eye);
+        ASSERT_EQ(terms.lights.size(), 1u);
+        const litkit::LightTerms& t = terms.lights[0];
+        EXPECT_EQ(litkit::shade(*reflection, material, std::span<const litkit::Light>(&light, 1), p, n, eye),
+                  terms.total);
+
+        // What each printed name is, computed from the library's values.
+        std::map<std::string, std::vector<double>> computed;
+        auto put = [&](const std::string& key, const glm::vec3& v) { computed[key] = {v.x, v.y, v.z}; };
+        put("V", glm::normalize(eye - p));
+        put("L", t.to_light);
+        computed["f"] = {t.factor};
+        computed["N.L"] = {glm::dot(n, t.to_light)};
+        computed["D"] = {t.diffuse};
+        computed["S"] = {t.specular};
+        put("I", terms.total);
+        computed["pixel"] = {double(litkit::to_pixel(terms.total.x, gamma)),
+                             double(litkit::to_pixel(terms.total.y, gamma)),
+                             double(litkit::to_pixel(terms.total.z, gamma))};
+        const glm::vec3 to_eye = glm::normalize(eye - p);
+        computed["R.V"] = {glm::dot(2.0f * glm::dot(n, t.to_light) * n - t.to_light, to_eye)};
+        computed["N.H"] = {std::max(0.0f, glm::dot(n, glm::normalize(t.to_light + to_eye)))};
+        if (type != "directional") {
+            const glm::vec3 light_position =
+                type == "point" ? std::get<litkit::PointLight>(light.kind).position : spot.position;
+            computed["d"] = {glm::length(light_position - p)};
+        }
+        if (type == "spot") {
+            // c = −L·axis; w from the soft edge; s = c^exponent · w.
+            const double c = -glm::dot(t.to_light, glm::normalize(spot.direction));
+            const double cos_outer = std::cos(glm::radians(double(spot.cutoff_degrees)));
+            const double cos_inner =
+                std::cos(glm::radians(double(spot.cutoff_degrees) * (1.0 - spot.penumbra)));
+            const double u = (c - cos_outer) / (cos_inner - cos_outer);
+            const double w = c >= cos_inner ? 1.0 : u * u * (3.0 - 2.0 * u);
+            computed["c"] = {c};
+            computed["w"] = {w};
+            computed["s"] = {(spot.exponent == 0.0f ? 1.0 : std::pow(c, double(spot.exponent))) * w};
+        }
+        for (const auto& [name, value] : t.intermediates) computed[name] = {value};
+        // Gooch's tones as vectors.
+        if (computed.count("cool.r")) {
+            computed["cool"] = {computed["cool.r"][0], computed["cool.g"][0], computed["cool.b"][0]};
+            computed["warm"] = {computed["warm.r"][0], computed["warm.g"][0], computed["warm.b"][0]};
+        }
+
+        ASSERT_FALSE(e.results.empty());
+        for (const auto& [name, printed] : e.results) {
+            const auto found = computed.find(name);
+            ASSERT_NE(found, computed.end()) << "the test knows no value named " << name;
+            ASSERT_EQ(found->second.size(), printed.size()) << name;
+            for (std::size_t i = 0; i < printed.size(); ++i) {
+                if (name == "pixel")
+                    EXPECT_EQ(found->second[i], printed[i]) << name << "[" << i << "]";
+                else
+                    expect_printed(found->second[i], printed[i], name + "[" + std::to_string(i) + "]");
+            }
+        }
+        // Every example states at least the light, the terms and the result.
+        for (const char* required : {"L", "f", "D", "S", "I", "pixel"}) {
+            bool present = false;
+            for (const auto& result : e.results) present = present || result.first == required;
+            EXPECT_TRUE(present) << required;
+        }
+    }
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        EXPECT_TRUE(models.count(std::string(model.name))) << "no worked example of " << model.name;
+}
