@@ -142,3 +142,43 @@ TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
     EXPECT_EQ(centre[1], scene.output.background[1]);
     EXPECT_EQ(centre[2], scene.output.background[2]);
 }
+
+// A prepared scene (issue 15): another observer, image size, models,
+// material or light re-renders without building the meshes again, and draws
+// what a fresh renderer of the changed scene draws.
+TEST(Renderer, UpdateKeepsTheMeshesUnlessAnObjectMoves) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.width = 160;
+    scene.output.height = 120;
+    litkit::Renderer renderer(scene);
+    EXPECT_EQ(renderer.mesh_builds(), 1u);
+    const litkit::Image first = renderer.render();
+
+    litkit::Scene changed = scene;
+    changed.observer.position = {4.0f, 2.0f, 3.0f};
+    changed.output.width = 200;
+    changed.output.height = 100;
+    changed.reflection = litkit::Reflection::Toon;
+    changed.shading = litkit::Shading::Gouraud;
+    changed.objects[0].material.kd = 0.3f;
+    changed.lights[0].light.intensity = 30.0f;
+    changed.output.gamma = 2.2f;
+    renderer.update(changed);
+    EXPECT_EQ(renderer.mesh_builds(), 1u) << "nothing moved: no new meshes";
+    const litkit::Image updated = renderer.render();
+    EXPECT_EQ(updated.width, 200);
+    EXPECT_EQ(updated.rgb, litkit::render(changed).rgb);
+    EXPECT_NE(updated.rgb, first.rgb);
+
+    // Back to the first scene: the first picture again.
+    renderer.update(scene);
+    EXPECT_EQ(renderer.render().rgb, first.rgb);
+    EXPECT_EQ(renderer.mesh_builds(), 1u);
+
+    // Moving the object builds its mesh again.
+    litkit::Scene moved = scene;
+    moved.objects[0].position.x += 0.5f;
+    renderer.update(moved);
+    EXPECT_EQ(renderer.mesh_builds(), 2u);
+    EXPECT_EQ(renderer.render().rgb, litkit::render(moved).rgb);
+}

@@ -56,6 +56,16 @@ public:
     // Draws into `image`, reusing its storage (resized if needed).
     void render_into(Image& image);
 
+    // The scene to draw from now on. Meshes and normals are kept when every
+    // object keeps its shape, parameters and place (a new observer, image
+    // size, models, materials, lights or gamma cost only the rendering);
+    // otherwise they are built again. A mesh file is not read again unless
+    // its object changed.
+    void update(const Scene& scene);
+    // How often the meshes were built (once at construction; again by an
+    // update that moved, reshaped, added or removed an object).
+    std::size_t mesh_builds() const;
+
     // Draws one frame and reports how pixel (x, y) got its value. Throws
     // ArgumentError outside the image.
     PixelProbe probe(int x, int y);

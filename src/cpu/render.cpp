@@ -25,6 +25,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "litkit/equations.hpp"
@@ -196,7 +198,10 @@ struct Renderer::Impl {
           kernels(o.kernels == RenderOptions::Kernels::Portable ? kernels::portable_kernels
                                                                 : kernels::select_kernels()) {}
 
+    std::size_t mesh_builds = 0;  // how often prepare() built the meshes
+
     void prepare();
+    void prepare_surfaces();
     void vertex_stage(int width, int height);
     void setup(SetupChunk& chunk, int width, int height);
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
@@ -243,11 +248,26 @@ void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) co
                         s.b[static_cast<std::size_t>(x)]};
 }
 
-void Renderer::Impl::prepare() {
+// Everything of the scene but its meshes: lights, materials and models.
+void Renderer::Impl::prepare_surfaces() {
+    lights.clear();
     for (const SceneLight& light : scene.lights) lights.push_back(equations::prepare_light(light.light));
     const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
     const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const SceneObject& object = scene.objects[o];
+        PreparedObject& prepared = objects[o];
+        prepared.material = equations::splat<float>(object.material);
+        prepared.raw_material = object.material;
+        prepared.reflection = object.reflection.value_or(scene_reflection);
+        prepared.shading = object.shading.value_or(scene_shading);
+    }
+}
 
+void Renderer::Impl::prepare() {
+    ++mesh_builds;
+    objects.clear();
+    chunks.clear();
     for (const SceneObject& object : scene.objects) {
         WorldMesh mesh = world_mesh(object);
         PreparedObject prepared;
@@ -259,12 +279,9 @@ void Renderer::Impl::prepare() {
             prepared.face_normals.push_back(face_normal(
                 prepared.positions[t[0]], prepared.positions[t[1]], prepared.positions[t[2]]));
         }
-        prepared.material = equations::splat<float>(object.material);
-        prepared.raw_material = object.material;
-        prepared.reflection = object.reflection.value_or(scene_reflection);
-        prepared.shading = object.shading.value_or(scene_shading);
         objects.push_back(std::move(prepared));
     }
+    prepare_surfaces();
 
     // Setup jobs: fixed triangle ranges, so their output buffers are reused.
     for (std::size_t o = 0; o < objects.size(); ++o) {
@@ -691,6 +708,51 @@ void Renderer::render_into(Image& image) {
         impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
     });
 }
+
+namespace {
+
+// True when the two objects have the same mesh in the same place: the same
+// shape with the same parameters, position, rotation and scale.
+bool same_geometry(const SceneObject& a, const SceneObject& b) {
+    if (a.position != b.position || a.rotation_degrees != b.rotation_degrees || a.scale != b.scale)
+        return false;
+    if (a.shape.index() != b.shape.index()) return false;
+    return std::visit(
+        [&](const auto& shape) {
+            using S = std::decay_t<decltype(shape)>;
+            const S& other = std::get<S>(b.shape);
+            if constexpr (std::is_same_v<S, CubeShape>) return shape.size == other.size;
+            else if constexpr (std::is_same_v<S, SphereShape>)
+                return shape.radius == other.radius && shape.segments == other.segments &&
+                       shape.rings == other.rings;
+            else if constexpr (std::is_same_v<S, TorusShape>)
+                return shape.major_radius == other.major_radius &&
+                       shape.minor_radius == other.minor_radius && shape.segments == other.segments &&
+                       shape.sides == other.sides;
+            else if constexpr (std::is_same_v<S, TeapotShape>)
+                return shape.size == other.size && shape.subdivisions == other.subdivisions;
+            else
+                return shape.file == other.file;
+        },
+        a.shape);
+}
+
+}  // namespace
+
+void Renderer::update(const Scene& scene) {
+    Impl& impl = *impl_;
+    bool same = scene.objects.size() == impl.scene.objects.size();
+    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
+        same = same_geometry(scene.objects[o], impl.scene.objects[o]);
+    impl.scene = scene;
+    if (same) {
+        impl.prepare_surfaces();
+    } else {
+        impl.prepare();
+    }
+}
+
+std::size_t Renderer::mesh_builds() const { return impl_->mesh_builds; }
 
 PixelProbe Renderer::probe(int x, int y) {
     const OutputSettings& output = impl_->scene.output;
