@@ -125,6 +125,12 @@ Scene load_scene(std::span<const std::filesystem::path> files);
 // folder resolves relative mesh paths.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);
 
+// The scene as one TOML file that `load_scene` reads back as the same scene
+// (every value, colours as their 0-255 integers, every key written out).
+// Mesh paths are written relative to the folder of `written_as` where they
+// can be, else absolute. Comments of the original files are not kept.
+std::string scene_to_toml(const Scene& scene, const std::filesystem::path& written_as = {});
+
 // The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
 // the centre of the room, Phong shading, Phong reflection.
 std::string_view default_scene_toml();
