@@ -21,6 +21,9 @@ packages=(
   # Tests of the exports: glslangValidator checks the GLSL; the exported
   # program's --window is built with SDL2 and shown on a virtual X display.
   glslang-tools libsdl2-dev xvfb xauth
+  # litkit view: Dear ImGui's panel; its tests drive a real window on Xvfb
+  # with xdotool and read it back with xwd.
+  libimgui-dev libstb-dev xdotool x11-apps
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)

@@ -27,6 +27,7 @@
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
 #include "usage.hpp"
+#include "viewer/viewer.hpp"
 
 namespace {
 
@@ -58,6 +59,12 @@ struct CompareArguments {
     std::string output;
     std::string vary = "both";
     bool no_labels = false;
+    bool yes = false;
+};
+
+struct ViewArguments {
+    SceneArguments scene;
+    bool no_ui = false;
     bool yes = false;
 };
 
@@ -410,6 +417,25 @@ int run_compare(const CompareArguments& arguments) {
     return exit_success;
 }
 
+int run_view(const ViewArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
+    litkit_cli::ViewerOptions options;
+    options.files.assign(arguments.scene.scenes.begin(), arguments.scene.scenes.end());
+    options.title = arguments.scene.scenes.empty() ? "default scene" : arguments.scene.scenes.front();
+    options.gl_backend = arguments.scene.backend == "gl";
+    options.threads = arguments.scene.threads.value_or(0);
+    options.show_panel = !arguments.no_ui;
+    // A reload reads the files as at start; [lighting] left out now takes
+    // the defaults (there is no terminal to ask in a window).
+    options.load = [arguments] {
+        litkit::Scene loaded = load(arguments.scene);
+        settle_missing_lighting(loaded, true);
+        return loaded;
+    };
+    return litkit_cli::run_viewer(options, std::move(scene));
+}
+
 int run_explain(const ExplainArguments& arguments) {
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
@@ -596,6 +622,14 @@ int main(int argc, char** argv) {
     compare->add_flag("-y,--yes", compare_arguments.yes,
                       "Use the default models (phong / phong) where [lighting] leaves one out");
 
+    ViewArguments view_arguments;
+    CLI::App* view = app.add_subcommand(
+        "view", "A live window on the scene: orbit, switch models at a key, edit, reload on save");
+    add_scene_options(view, view_arguments.scene);
+    view->add_flag("--no-ui", view_arguments.no_ui, "Start with the panel hidden (H shows it)");
+    view->add_flag("-y,--yes", view_arguments.yes,
+                   "Use the default models (phong / phong) where [lighting] leaves one out");
+
     ExplainArguments explain_arguments;
     CLI::App* explain = app.add_subcommand(
         "explain", "How a pixel got its value, step by step; or the equations at a point (--at)");
@@ -659,6 +693,7 @@ int main(int argc, char** argv) {
         if (compare->parsed()) return run_compare(compare_arguments);
         if (turntable->parsed()) return run_turntable(turntable_arguments);
         if (explain->parsed()) return run_explain(explain_arguments);
+        if (view->parsed()) return run_view(view_arguments);
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
         print_diagnostics(error.warnings());

@@ -1,0 +1,559 @@
+// The viewer: an SDL2 window with an OpenGL context that shows litkit's
+// picture pixel for pixel (a texture blitted 1:1), a Dear ImGui panel over
+// it, the camera under the mouse, the models under the keys, and the scene's
+// files watched for changes. Nothing is drawn while nothing changes.
+#include "viewer/viewer.hpp"
+
+#include <SDL2/SDL.h>
+#include <epoxy/gl.h>
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <backends/imgui_impl_sdl.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "litkit/error.hpp"
+#include "litkit/files.hpp"
+#include "litkit/gl_renderer.hpp"
+#include "litkit/image.hpp"
+#include "litkit/render.hpp"
+#include "viewer/watch.hpp"
+
+namespace litkit_cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using clock_type = std::chrono::steady_clock;
+
+// The files a scene is made of: its scene files and its mesh files.
+std::vector<fs::path> files_of(const ViewerOptions& options, const litkit::Scene& scene) {
+    std::vector<fs::path> files = options.files;
+    for (const litkit::SceneObject& object : scene.objects)
+        if (const auto* mesh = std::get_if<litkit::MeshFileShape>(&object.shape))
+            files.push_back(mesh->file);
+    return files;
+}
+
+// The user's camera: the observer as the mouse moved it.
+struct Camera {
+    litkit::Observer observer;
+
+    // Turns the observer about `up` through look_at (yaw) and about the
+    // horizontal axis (pitch), stopping 5° short of the poles.
+    void orbit(float yaw_radians, float pitch_radians) {
+        const glm::vec3 up = glm::normalize(observer.up);
+        glm::vec3 offset = observer.position - observer.look_at;
+        offset = glm::vec3(glm::rotate(glm::mat4(1.0f), yaw_radians, up) * glm::vec4(offset, 0.0f));
+        const glm::vec3 right = glm::cross(up, offset);
+        if (glm::length(right) > 0.0f) {
+            const float angle = std::acos(std::clamp(glm::dot(glm::normalize(offset), up), -1.0f, 1.0f));
+            const float limit = glm::radians(5.0f);
+            const float pitched = std::clamp(angle - pitch_radians, limit, glm::pi<float>() - limit);
+            offset = glm::vec3(glm::rotate(glm::mat4(1.0f), angle - pitched, glm::normalize(right)) *
+                               glm::vec4(offset, 0.0f));
+        }
+        observer.position = observer.look_at + offset;
+    }
+    void zoom(float notches) {  // ×1.1 closer per notch
+        const glm::vec3 offset = observer.position - observer.look_at;
+        observer.position = observer.look_at + offset * std::pow(1.1f, -notches);
+    }
+    void pan(float right_amount, float up_amount) {
+        const glm::vec3 forward = glm::normalize(observer.look_at - observer.position);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, observer.up));
+        const glm::vec3 up = glm::cross(right, forward);
+        const glm::vec3 move = right * right_amount + up * up_amount;
+        observer.position += move;
+        observer.look_at += move;
+    }
+};
+
+bool inside_room(const litkit::Room& room, const glm::vec3& p) {
+    return std::abs(p.x) <= room.width / 2 && std::abs(p.y) <= room.height / 2 &&
+           std::abs(p.z) <= room.depth / 2;
+}
+
+// A renderer of either backend behind one face.
+class Drawer {
+public:
+    Drawer(const litkit::Scene& scene, bool gl, int threads) : gl_(gl), threads_(threads) {
+        rebuild(scene);
+    }
+    void update(const litkit::Scene& scene) {
+        if (cpu_) cpu_->update(scene);
+        else rebuild(scene);  // the OpenGL backend uploads again
+    }
+    void render_into(litkit::Image& image) {
+        if (cpu_) cpu_->render_into(image);
+        else gpu_->render_into(image);
+    }
+
+private:
+    void rebuild(const litkit::Scene& scene) {
+        litkit::RenderOptions options;
+        options.threads = threads_;
+        if (gl_) gpu_ = std::make_unique<litkit::GlRenderer>(scene, options);
+        else cpu_ = std::make_unique<litkit::Renderer>(scene, options);
+    }
+    bool gl_;
+    int threads_;
+    std::unique_ptr<litkit::Renderer> cpu_;
+    std::unique_ptr<litkit::GlRenderer> gpu_;
+};
+
+// Shows an RGB image 1:1 in the window's framebuffer.
+class Screen {
+public:
+    Screen() {
+        glGenTextures(1, &texture_);
+        glGenFramebuffers(1, &framebuffer_);
+    }
+    ~Screen() {
+        glDeleteFramebuffers(1, &framebuffer_);
+        glDeleteTextures(1, &texture_);
+    }
+    void show(const litkit::Image& image, int drawable_width, int drawable_height) {
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        if (image.width != width_ || image.height != height_) {
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB,
+                         GL_UNSIGNED_BYTE, image.rgb.data());
+            width_ = image.width;
+            height_ = image.height;
+        } else {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGB,
+                            GL_UNSIGNED_BYTE, image.rgb.data());
+        }
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glViewport(0, 0, drawable_width, drawable_height);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        // Row 0 of the image is the top (docs/spec.md §1); OpenGL's is the
+        // bottom: flip while copying, pixel for pixel.
+        glBlitFramebuffer(0, 0, image.width, image.height, 0, drawable_height,
+                          image.width, drawable_height - image.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    }
+
+private:
+    GLuint texture_ = 0, framebuffer_ = 0;
+    int width_ = 0, height_ = 0;
+};
+
+// "scene-1.png", "scene-2.png", …: the first name not taken.
+fs::path next_screenshot_name(const std::string& stem) {
+    for (int n = 1;; ++n) {
+        fs::path name = stem + "-" + std::to_string(n) + ".png";
+        if (!fs::exists(name)) return name;
+    }
+}
+
+struct KeyModel {
+    SDL_Keycode key;
+    litkit::Shading shading;
+};
+// F/G/P (and D when faceted shading lands): docs/spec.md §9.4.
+constexpr KeyModel shading_keys[] = {
+    {SDLK_f, litkit::Shading::Flat},
+    {SDLK_g, litkit::Shading::Gouraud},
+    {SDLK_p, litkit::Shading::Phong},
+};
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
+    SDL_SetHint(SDL_HINT_VIDEO_X11_NET_WM_BYPASS_COMPOSITOR, "0");
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        std::cerr << "error: cannot open a window: " << SDL_GetError() << "\n";
+        return 1;
+    }
+    // No display (SDL would fall back to a driver without one): say so at once.
+    const char* driver = SDL_GetCurrentVideoDriver();
+    if (!driver || std::string(driver) == "offscreen" || std::string(driver) == "dummy") {
+        std::cerr << "error: cannot open a window: no display (is DISPLAY set?)\n";
+        SDL_Quit();
+        return 1;
+    }
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+
+    litkit::Scene file_scene = scene;  // as the files say (with the command line's options)
+    Camera camera{scene.observer};
+    std::optional<litkit::Reflection> key_reflection;
+    std::optional<litkit::Shading> key_shading;
+    bool show_panel = options.show_panel;
+    bool turntable = false;
+    std::string diagnostics;  // the last reload's errors, shown until a good one
+
+    SDL_Window* window = SDL_CreateWindow(
+        "litkit view", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, scene.output.width,
+        scene.output.height, SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+    if (!window) {
+        std::cerr << "error: cannot open a window: " << SDL_GetError() << "\n";
+        SDL_Quit();
+        return 1;
+    }
+    SDL_GLContext context = SDL_GL_CreateContext(window);
+    if (!context) {
+        std::cerr << "error: cannot create an OpenGL 3.3 context for the window: " << SDL_GetError()
+                  << "\n";
+        SDL_DestroyWindow(window);
+        SDL_Quit();
+        return 1;
+    }
+    SDL_GL_MakeCurrent(window, context);
+    SDL_GL_SetSwapInterval(0);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+    ImGui::StyleColorsDark();
+    ImGui_ImplSDL2_InitForOpenGL(window, context);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    int status = 0;
+    {
+        Screen screen;
+        std::unique_ptr<Drawer> drawer;
+        litkit::Image image;
+        FileWatcher watcher(files_of(options, file_scene));
+        std::optional<clock_type::time_point> reload_at;
+        double frame_ms = 0.0;
+        char save_path[512] = "";
+        bool confirm_overwrite = false;
+        std::string save_message;
+
+        // The scene the picture shows: the file's, the keys' models, the camera.
+        auto shown_scene = [&] {
+            litkit::Scene shown = scene;
+            shown.observer = camera.observer;
+            if (key_reflection) shown.reflection = key_reflection;
+            if (key_shading) shown.shading = key_shading;
+            int w = 0, h = 0;
+            SDL_GL_GetDrawableSize(window, &w, &h);
+            shown.output.width = std::clamp(w, 1, 16384);
+            shown.output.height = std::clamp(h, 1, 16384);
+            return shown;
+        };
+        auto set_title = [&] {
+            const litkit::Scene shown = shown_scene();
+            std::string title = "litkit view - " + options.title + " - " +
+                                std::string(litkit::to_string(shown.reflection.value_or(litkit::default_reflection))) +
+                                " / " + std::string(litkit::to_string(shown.shading.value_or(litkit::default_shading)));
+            if (!diagnostics.empty()) title += " - invalid edit, showing the last good scene";
+            SDL_SetWindowTitle(window, title.c_str());
+        };
+
+        bool dirty = true;   // the picture must be rendered again
+        bool redraw = true;  // the window must be drawn again
+        bool running = true;
+        int drag_button = 0;
+        auto last_turn = clock_type::now();
+        while (running) {
+            // Wait for something to do: events, the next reload check, or the
+            // next turntable step. Nothing is rendered in between.
+            const int timeout = dirty ? 0 : turntable || drag_button ? 10 : reload_at ? 20 : 100;
+            SDL_Event event;
+            bool have = SDL_WaitEventTimeout(&event, timeout) == 1;
+            if (have && show_panel) redraw = true;  // the panel answers every event
+            while (have) {
+                const bool panel_wants = show_panel && ImGui_ImplSDL2_ProcessEvent(&event) &&
+                                         (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
+                switch (event.type) {
+                    case SDL_QUIT:
+                        running = false;
+                        break;
+                    case SDL_WINDOWEVENT:
+                        if (event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) dirty = true;
+                        redraw = true;
+                        break;
+                    case SDL_KEYDOWN: {
+                        if (show_panel && ImGui::GetIO().WantCaptureKeyboard) break;
+                        const SDL_Keycode key = event.key.keysym.sym;
+                        if (key == SDLK_ESCAPE || key == SDLK_q) running = false;
+                        else if (key == SDLK_h) show_panel = !show_panel, redraw = true;
+                        else if (key == SDLK_r) camera.observer = scene.observer, dirty = true;
+                        else if (key == SDLK_SPACE) turntable = !turntable, last_turn = clock_type::now();
+                        else if (key == SDLK_0) key_reflection.reset(), key_shading.reset(), dirty = true;
+                        else if (key >= SDLK_1 && key <= SDLK_9) {
+                            const auto models = litkit::reflection_models();
+                            const std::size_t index = static_cast<std::size_t>(key - SDLK_1);
+                            if (index < models.size()) key_reflection = models[index].id, dirty = true;
+                        } else if (key == SDLK_s) {
+                            const fs::path name = next_screenshot_name(
+                                options.files.empty() ? "default" : options.files.front().stem().string());
+                            try {
+                                litkit::write_png(image, name);
+                                std::cout << "litkit: wrote " << name.string() << "\n" << std::flush;
+                            } catch (const litkit::Error& error) {
+                                std::cerr << error.what() << "\n";
+                            }
+                        } else {
+                            for (const KeyModel& model : shading_keys)
+                                if (key == model.key) key_shading = model.shading, dirty = true;
+                        }
+                        break;
+                    }
+                    case SDL_MOUSEBUTTONDOWN:
+                        if (!panel_wants && (event.button.button == SDL_BUTTON_LEFT ||
+                                             event.button.button == SDL_BUTTON_RIGHT))
+                            drag_button = event.button.button;
+                        break;
+                    case SDL_MOUSEBUTTONUP:
+                        drag_button = 0;
+                        break;
+                    case SDL_MOUSEMOTION: {
+                        if (!drag_button) break;
+                        const litkit::Observer before = camera.observer;
+                        if (drag_button == SDL_BUTTON_LEFT) {
+                            camera.orbit(-0.01f * static_cast<float>(event.motion.xrel),
+                                         -0.01f * static_cast<float>(event.motion.yrel));
+                        } else {
+                            const float distance = glm::length(camera.observer.position - camera.observer.look_at);
+                            int w = 0, h = 0;
+                            SDL_GL_GetDrawableSize(window, &w, &h);
+                            const float per_pixel = 2.0f * distance *
+                                std::tan(glm::radians(camera.observer.fov_degrees) / 2.0f) / static_cast<float>(std::max(h, 1));
+                            camera.pan(-per_pixel * static_cast<float>(event.motion.xrel),
+                                       per_pixel * static_cast<float>(event.motion.yrel));
+                        }
+                        if (!inside_room(scene.room, camera.observer.position)) camera.observer = before;
+                        dirty = true;
+                        break;
+                    }
+                    case SDL_MOUSEWHEEL: {
+                        if (panel_wants) break;
+                        const litkit::Observer before = camera.observer;
+                        camera.zoom(static_cast<float>(event.wheel.y));
+                        if (!inside_room(scene.room, camera.observer.position) ||
+                            glm::length(camera.observer.position - camera.observer.look_at) < 1e-3f)
+                            camera.observer = before;
+                        dirty = true;
+                        break;
+                    }
+                    default:
+                        break;
+                }
+                have = SDL_PollEvent(&event) == 1;
+            }
+            if (!running) break;
+
+            if (turntable) {
+                const auto now = clock_type::now();
+                const float seconds = std::chrono::duration<float>(now - last_turn).count();
+                last_turn = now;
+                const litkit::Observer before = camera.observer;
+                camera.orbit(seconds * glm::radians(20.0f), 0.0f);  // 20° a second
+                if (!inside_room(scene.room, camera.observer.position)) camera.observer = before;
+                dirty = true;
+            }
+
+            // Live reload: a change starts a short wait (an editor may write
+            // in several steps); then read, check, and show or keep.
+            if (watcher.changed()) reload_at = clock_type::now() + std::chrono::milliseconds(60);
+            if (reload_at && clock_type::now() >= *reload_at) {
+                reload_at.reset();
+                try {
+                    litkit::Scene loaded = options.load();
+                    if (!(loaded.observer.position == file_scene.observer.position &&
+                          loaded.observer.look_at == file_scene.observer.look_at &&
+                          loaded.observer.up == file_scene.observer.up &&
+                          loaded.observer.fov_degrees == file_scene.observer.fov_degrees))
+                        camera.observer = loaded.observer;  // the file moved the camera
+                    camera.observer.fov_degrees = loaded.observer.fov_degrees;
+                    camera.observer.near = loaded.observer.near;
+                    camera.observer.far = loaded.observer.far;
+                    file_scene = loaded;
+                    scene = loaded;
+                    if (!diagnostics.empty()) std::cerr << "litkit: the scene is valid again\n";
+                    diagnostics.clear();
+                    watcher.watch(files_of(options, loaded));
+                    dirty = true;
+                } catch (const litkit::SceneError& error) {
+                    diagnostics.clear();
+                    for (const litkit::Diagnostic& d : error.diagnostics()) diagnostics += d.to_string() + "\n";
+                    std::cerr << diagnostics << std::flush;
+                } catch (const litkit::Error& error) {
+                    diagnostics = std::string(error.what()) + "\n";
+                    std::cerr << diagnostics << std::flush;
+                }
+                set_title();
+                redraw = true;
+            }
+
+            if (dirty) {
+                const auto start = clock_type::now();
+                const litkit::Scene shown = shown_scene();
+                try {
+                    if (!drawer) drawer = std::make_unique<Drawer>(shown, options.gl_backend, options.threads);
+                    else drawer->update(shown);
+                    drawer->render_into(image);
+                } catch (const litkit::Error& error) {
+                    diagnostics = std::string(error.what()) + "\n";
+                    std::cerr << diagnostics << std::flush;
+                }
+                frame_ms = std::chrono::duration<double, std::milli>(clock_type::now() - start).count();
+                dirty = false;
+                redraw = true;
+                set_title();
+            }
+            if (!redraw) continue;
+
+            int w = 0, h = 0;
+            SDL_GL_GetDrawableSize(window, &w, &h);
+            if (image.width > 0) screen.show(image, w, h);
+            if (show_panel) {
+                ImGui_ImplOpenGL3_NewFrame();
+                ImGui_ImplSDL2_NewFrame();
+                ImGui::NewFrame();
+                ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+                ImGui::SetNextWindowBgAlpha(0.85f);
+                ImGui::Begin("litkit", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+                bool edited = false;
+                // The models: the keys' choice, or the scene's.
+                {
+                    const auto models = litkit::reflection_models();
+                    int reflection = key_reflection ? static_cast<int>(*key_reflection) + 1 : 0;
+                    std::vector<const char*> names{"(the scene's)"};
+                    for (const auto& model : models) names.push_back(model.name.data());
+                    if (ImGui::Combo("reflection", &reflection, names.data(), static_cast<int>(names.size()))) {
+                        key_reflection = reflection == 0 ? std::nullopt
+                                                         : std::optional(static_cast<litkit::Reflection>(reflection - 1));
+                        dirty = true;
+                    }
+                    int shading = key_shading ? static_cast<int>(*key_shading) + 1 : 0;
+                    std::vector<const char*> shadings{"(the scene's)"};
+                    for (int s = 0; s < litkit::shading_count; ++s)
+                        shadings.push_back(litkit::to_string(static_cast<litkit::Shading>(s)).data());
+                    if (ImGui::Combo("shading", &shading, shadings.data(), static_cast<int>(shadings.size()))) {
+                        key_shading = shading == 0 ? std::nullopt
+                                                   : std::optional(static_cast<litkit::Shading>(shading - 1));
+                        dirty = true;
+                    }
+                }
+                edited |= ImGui::SliderFloat("gamma", &scene.output.gamma, 0.2f, 4.0f);
+                for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+                    litkit::SceneObject& object = scene.objects[i];
+                    const std::string label = (object.name.empty() ? "objects[" + std::to_string(i) + "]" : object.name) +
+                                              "##object" + std::to_string(i);
+                    if (!ImGui::TreeNode(label.c_str())) continue;
+                    litkit::Material& m = object.material;
+                    edited |= ImGui::ColorEdit3("color", &m.color.x);
+                    edited |= ImGui::SliderFloat("ka", &m.ka, 0.0f, 1.0f);
+                    edited |= ImGui::SliderFloat("kd", &m.kd, 0.0f, 1.0f);
+                    edited |= ImGui::SliderFloat("ks", &m.ks, 0.0f, 1.0f);
+                    edited |= ImGui::SliderFloat("shininess", &m.shininess, 0.0f, 256.0f);
+                    litkit::for_each_model_parameter(
+                        [&](const litkit::ModelParameter& parameter, float& value) {
+                            const std::string name(parameter.key);
+                            if (parameter.whole) {
+                                int whole = static_cast<int>(value);
+                                if (ImGui::SliderInt(name.c_str(), &whole, static_cast<int>(parameter.low),
+                                                     static_cast<int>(parameter.high))) {
+                                    value = static_cast<float>(whole);
+                                    edited = true;
+                                }
+                            } else {
+                                edited |= ImGui::SliderFloat(name.c_str(), &value, parameter.low, parameter.high);
+                            }
+                        },
+                        m);
+                    ImGui::TreePop();
+                }
+                for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+                    litkit::SceneLight& light = scene.lights[i];
+                    const std::string label = (light.name.empty() ? "lights[" + std::to_string(i) + "]" : light.name) +
+                                              "##light" + std::to_string(i);
+                    if (!ImGui::TreeNode(label.c_str())) continue;
+                    edited |= ImGui::SliderFloat("intensity", &light.light.intensity, 0.0f, 100.0f);
+                    edited |= ImGui::ColorEdit3("color", &light.light.color.x);
+                    std::visit(
+                        [&](auto& kind) {
+                            using K = std::decay_t<decltype(kind)>;
+                            const float half = std::max({scene.room.width, scene.room.height, scene.room.depth}) / 2;
+                            if constexpr (std::is_same_v<K, litkit::DirectionalLight>) {
+                                edited |= ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
+                            } else if constexpr (std::is_same_v<K, litkit::PointLight> ||
+                                                 std::is_same_v<K, litkit::SpotLight>) {
+                                glm::vec3 position = kind.position;
+                                if (ImGui::DragFloat3("position", &position.x, 0.02f, -half, half) &&
+                                    inside_room(scene.room, position)) {
+                                    kind.position = position;
+                                    edited = true;
+                                }
+                                edited |= ImGui::DragFloat3("attenuation", &kind.attenuation.x, 0.01f, 0.0f, 10.0f);
+                                if constexpr (std::is_same_v<K, litkit::SpotLight>) {
+                                    edited |= ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
+                                    edited |= ImGui::SliderFloat("cutoff", &kind.cutoff_degrees, 0.5f, 90.0f);
+                                    edited |= ImGui::SliderFloat("exponent", &kind.exponent, 0.0f, 128.0f);
+                                    edited |= ImGui::SliderFloat("penumbra", &kind.penumbra, 0.0f, 1.0f);
+                                }
+                            }
+                        },
+                        light.light.kind);
+                    ImGui::TreePop();
+                }
+                ImGui::Text("frame %.1f ms, %dx%d", frame_ms, image.width, image.height);
+                ImGui::Separator();
+                ImGui::InputText("file", save_path, sizeof save_path);
+                if (ImGui::Button(confirm_overwrite ? "Overwrite" : "Save as...") && save_path[0] != '\0') {
+                    const fs::path path(save_path);
+                    if (fs::exists(path) && !confirm_overwrite) {
+                        confirm_overwrite = true;
+                        save_message = "exists: press Overwrite to replace it";
+                    } else {
+                        litkit::Scene saved = scene;
+                        saved.observer = camera.observer;
+                        if (key_reflection) saved.reflection = key_reflection;
+                        if (key_shading) saved.shading = key_shading;
+                        try {
+                            litkit::write_file_atomically(path, litkit::scene_to_toml(saved, path));
+                            save_message = "saved " + path.string();
+                            std::cout << "litkit: wrote " << path.string() << "\n" << std::flush;
+                        } catch (const litkit::Error& error) {
+                            save_message = error.what();
+                        }
+                        confirm_overwrite = false;
+                    }
+                }
+                if (!save_message.empty()) ImGui::TextUnformatted(save_message.c_str());
+                if (!diagnostics.empty()) {
+                    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+                    ImGui::TextUnformatted(diagnostics.c_str());
+                    ImGui::PopStyleColor();
+                }
+                ImGui::End();
+                ImGui::Render();
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+                if (edited) dirty = true;
+            }
+            SDL_GL_SwapWindow(window);
+            redraw = false;
+        }
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+    SDL_GL_DeleteContext(context);
+    SDL_DestroyWindow(window);
+    SDL_Quit();
+    return status;
+}
+
+}  // namespace litkit_cli
