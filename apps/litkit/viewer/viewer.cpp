@@ -262,13 +262,17 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
 
         bool dirty = true;   // the picture must be rendered again
         bool redraw = true;  // the window must be drawn again
+        // Dear ImGui lays a window out over a frame or two (an auto-sized
+        // window appears on its second): draw this many more after a change.
+        int panel_frames = 0;
         bool running = true;
         int drag_button = 0;
         auto last_turn = clock_type::now();
         while (running) {
             // Wait for something to do: events, the next reload check, or the
             // next turntable step. Nothing is rendered in between.
-            const int timeout = dirty ? 0 : turntable || drag_button ? 10 : reload_at ? 20 : 100;
+            const int timeout =
+                dirty || panel_frames > 0 ? 0 : turntable || drag_button ? 10 : reload_at ? 20 : 100;
             SDL_Event event;
             bool have = SDL_WaitEventTimeout(&event, timeout) == 1;
             if (have && show_panel) redraw = true;  // the panel answers every event
@@ -412,6 +416,12 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 dirty = false;
                 redraw = true;
                 set_title();
+            }
+            if (panel_frames > 0) {
+                --panel_frames;
+                redraw = true;
+            } else if (redraw && show_panel) {
+                panel_frames = 2;
             }
             if (!redraw) continue;
 

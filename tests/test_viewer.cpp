@@ -1,0 +1,389 @@
+// Tests of `litkit view` (docs/viewer.md) as a user meets it: the real viewer
+// in a real window on a virtual X display (Xvfb, started here), driven by
+// real input events (xdotool) and read back with xwd. Every picture is
+// compared with `litkit render` of the same settings.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "litkit/image.hpp"
+#include "litkit/scene.hpp"
+#include "run_command.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using litkit_test::run_command;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+// One Xvfb for the whole suite, on a display number it picks itself.
+class Display {
+public:
+    Display() {
+        int fds[2];
+        if (pipe(fds) != 0) return;
+        pid_ = fork();
+        if (pid_ == 0) {
+            close(fds[0]);
+            const int devnull = open("/dev/null", O_WRONLY);
+            dup2(devnull, 2);
+            const std::string fd = std::to_string(fds[1]);
+            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24",
+                   "-nolisten", "tcp", static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        char buffer[32] = {};
+        const ssize_t n = read(fds[0], buffer, sizeof buffer - 1);
+        close(fds[0]);
+        if (n > 0) name_ = ":" + std::string(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
+    }
+    ~Display() {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    const std::string& name() const { return name_; }
+
+private:
+    pid_t pid_ = -1;
+    std::string name_;
+};
+
+Display& display() {
+    static Display instance;
+    return instance;
+}
+
+// An 8-bit RGB picture from an X window dump (TrueColor, 32 bits a pixel).
+litkit::Image read_xwd(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)), {});
+    auto field = [&](int index) {
+        const unsigned char* p = data.data() + 4 * index;
+        return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+    };
+    litkit::Image image;
+    if (data.size() < 100 || field(11) != 32) return image;
+    const std::uint32_t header = field(0), width = field(4), height = field(5), byte_order = field(7);
+    const std::uint32_t bytes_per_line = field(12), masks[3] = {field(14), field(15), field(16)};
+    const std::size_t offset = header + 12 * std::size_t(field(19));
+    if (data.size() < offset + std::size_t(bytes_per_line) * height) return image;
+    image = litkit::Image(int(width), int(height));
+    for (std::uint32_t y = 0; y < height; ++y) {
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const unsigned char* p = data.data() + offset + std::size_t(y) * bytes_per_line + 4 * x;
+            const std::uint32_t v = byte_order == 0 ? (p[0] | p[1] << 8 | p[2] << 16 | std::uint32_t(p[3]) << 24)
+                                                     : (std::uint32_t(p[0]) << 24 | p[1] << 16 | p[2] << 8 | p[3]);
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t mask = masks[c];
+                image.pixel(int(x), int(y))[c] = static_cast<std::uint8_t>((v & mask) >> __builtin_ctz(mask));
+            }
+        }
+    }
+    return image;
+}
+
+int largest_difference(const litkit::Image& a, const litkit::Image& b) {
+    if (a.width != b.width || a.height != b.height) return 256;
+    int worst = 0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) worst = std::max(worst, std::abs(int(a.rgb[i]) - int(b.rgb[i])));
+    return worst;
+}
+
+const char* const small_scene = R"toml(
+[room]
+width = 10
+height = 10
+depth = 10
+
+[observer]
+position = [0, 1, 4]
+look_at = [0, 0, 0]
+
+[lighting]
+reflection = "phong"
+shading = "phong"
+
+[output]
+width = 160
+height = 120
+background = [20, 30, 40]
+
+[[lights]]
+name = "key"
+type = "point"
+position = [2, 3, 3]
+intensity = 12
+
+[[objects]]
+name = "ball"
+type = "sphere"
+radius = 1
+segments = 24
+rings = 12
+material = { color = [200, 100, 60], shininess = 20 }
+)toml";
+
+class Viewer : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_FALSE(display().name().empty()) << "Xvfb did not start (scripts/install-deps.sh installs it)";
+        dir = fs::temp_directory_path() / ("litkit-viewer-" + std::to_string(getpid()) + "-" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        write_scene(small_scene);
+    }
+    void TearDown() override {
+        if (pid > 0) {
+            kill(pid, SIGTERM);
+            waitpid(pid, nullptr, 0);
+        }
+        fs::remove_all(dir);
+    }
+
+    void write_scene(const std::string& text, const fs::path& name = "scene.toml") const {
+        std::ofstream(dir / name) << text;
+    }
+
+    // Starts the viewer; its window's id in `window`.
+    void start(const std::string& arguments) {
+        pid = fork();
+        if (pid == 0) {
+            if (chdir(dir.c_str()) != 0) _exit(127);
+            setenv("DISPLAY", display().name().c_str(), 1);
+            // Mesa and SDL keep a few allocations to the end of the process
+            // (the GL suites say the same): no leak check for the window.
+            setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+            const int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            const int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            dup2(out, 1);
+            dup2(err, 2);
+            execl("/bin/sh", "sh", "-c", (std::string("exec '" LITKIT_CLI "' view ") + arguments).c_str(),
+                  static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        const auto deadline = std::chrono::steady_clock::now() + 15s;
+        while (window.empty() && std::chrono::steady_clock::now() < deadline) {
+            const auto found = xdo("search --pid " + std::to_string(pid) + " --name 'litkit view'");
+            std::istringstream lines(found.output);
+            std::getline(lines, window);
+            if (window.empty()) std::this_thread::sleep_for(50ms);
+        }
+        ASSERT_FALSE(window.empty()) << "no window; stderr:\n" << text_of("stderr.txt");
+    }
+
+    litkit_test::CommandRun xdo(const std::string& arguments) const {
+        return run_command("DISPLAY=" + display().name() + " xdotool " + arguments);
+    }
+    void key(const std::string& name) const { xdo("key --window " + window + " " + name); }
+
+    litkit::Image screenshot() const {
+        const fs::path file = dir / "window.xwd";
+        run_command("DISPLAY=" + display().name() + " xwd -silent -id " + window + " -out " + quoted(file));
+        return read_xwd(file);
+    }
+
+    // The picture `litkit render` draws of the scene with these options.
+    litkit::Image rendered(const std::string& options, const std::string& scene = "scene.toml") const {
+        const auto made = run_command("cd " + quoted(dir) + " && '" LITKIT_CLI "' render " + scene + " " +
+                                      options + " -o expected.png");
+        EXPECT_EQ(made.status, 0) << made.output;
+        return litkit::read_png(dir / "expected.png");
+    }
+
+    // Waits until the window shows `expected` (within 1/255); the largest
+    // difference of the last look otherwise.
+    int wait_for(const litkit::Image& expected, std::chrono::milliseconds limit = 5000ms) const {
+        const auto deadline = std::chrono::steady_clock::now() + limit;
+        int difference = 256;
+        do {
+            difference = largest_difference(screenshot(), expected);
+            if (difference <= 1) return difference;
+            std::this_thread::sleep_for(40ms);
+        } while (std::chrono::steady_clock::now() < deadline);
+        return difference;
+    }
+
+    std::string text_of(const std::string& name) const {
+        std::ifstream in(dir / name);
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+    }
+    bool alive() const { return pid > 0 && waitpid(pid, nullptr, WNOHANG) == 0; }
+    int wait_exit() {
+        int status = -1;
+        for (int i = 0; i < 100 && waitpid(pid, &status, WNOHANG) == 0; ++i) std::this_thread::sleep_for(50ms);
+        pid = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    fs::path dir;
+    pid_t pid = -1;
+    std::string window;
+};
+
+}  // namespace
+
+TEST_F(Viewer, ShowsTheRenderPixelForPixelAndSwitchesModelsAtAKey) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    EXPECT_LE(wait_for(rendered("")), 1) << "at start";
+    const std::pair<const char*, const char*> keys[] = {
+        {"1", "--reflection lambert"},      {"2", "--reflection half-lambert"},
+        {"3", "--reflection phong"},        {"4", "--reflection blinn-phong"},
+        {"f", "--reflection blinn-phong --shading flat"},
+        {"g", "--reflection blinn-phong --shading gouraud"},
+        {"p", "--reflection blinn-phong --shading phong"},
+        {"7", "--reflection toon --shading phong"},
+        {"0", ""},
+    };
+    for (const auto& [pressed, options] : keys) {
+        key(pressed);
+        EXPECT_LE(wait_for(rendered(options)), 1) << "after key " << pressed;
+    }
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, OrbitMovesTheCameraAndRPutsItBack) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    const litkit::Image start_picture = rendered("");
+    ASSERT_LE(wait_for(start_picture), 1);
+    xdo("mousemove --window " + window + " 80 60 mousedown 1 mousemove --window " + window +
+        " 120 70 mouseup 1");
+    std::this_thread::sleep_for(300ms);
+    EXPECT_GT(largest_difference(screenshot(), start_picture), 1) << "the drag turned nothing";
+    key("r");
+    EXPECT_LE(wait_for(start_picture), 1) << "R resets the camera";
+    key("Escape");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, ReloadsOnSaveInPlaceAndByRenameAndSurvivesABadEdit) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    const litkit::Image first = rendered("");
+    ASSERT_LE(wait_for(first), 1);
+
+    // Written in place: the ball turns green.
+    std::string text = small_scene;
+    text.replace(text.find("[200, 100, 60]"), 14, "[60, 200, 90]");
+    write_scene(text);
+    const litkit::Image green = rendered("");
+    EXPECT_LE(wait_for(green), 1) << "after an in-place save";
+
+    // Saved the way editors do: a new file renamed over the old one.
+    std::string blue = small_scene;
+    blue.replace(blue.find("[200, 100, 60]"), 14, "[60, 90, 220]");
+    write_scene(blue, "scene.toml.new");
+    fs::rename(dir / "scene.toml.new", dir / "scene.toml");
+    const litkit::Image blue_picture = rendered("");
+    EXPECT_LE(wait_for(blue_picture), 1) << "after a save by rename";
+
+    // An invalid edit: the viewer lives on, keeps the picture, says where.
+    std::string bad = blue;
+    bad.replace(bad.find("intensity = 12"), 14, "intensity = -3");
+    write_scene(bad);
+    std::this_thread::sleep_for(600ms);
+    EXPECT_TRUE(alive());
+    EXPECT_LE(largest_difference(screenshot(), blue_picture), 1);
+    EXPECT_NE(text_of("stderr.txt").find("scene.toml:24:13: error: lights[0] 'key': intensity must be"),
+              std::string::npos)
+        << text_of("stderr.txt");
+
+    // A good save again: back to work.
+    write_scene(text);
+    EXPECT_LE(wait_for(green), 1) << "after the next valid save";
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, ResizingRendersAtTheNewSize) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    ASSERT_LE(wait_for(rendered("")), 1);
+    xdo("windowsize " + window + " 200 150");
+    EXPECT_LE(wait_for(rendered("--width 200 --height 150")), 1);
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, SSavesThePictureBesideTheScene) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    const litkit::Image first = rendered("");
+    ASSERT_LE(wait_for(first), 1);
+    key("s");
+    const auto deadline = std::chrono::steady_clock::now() + 3s;
+    while (!fs::exists(dir / "scene-1.png") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(40ms);
+    ASSERT_TRUE(fs::exists(dir / "scene-1.png"));
+    EXPECT_EQ(litkit::read_png(dir / "scene-1.png").rgb, first.rgb);
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+    EXPECT_NE(text_of("stdout.txt").find("litkit: wrote scene-1.png"), std::string::npos);
+}
+
+TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
+    // The panel's layout for a scene of one object and one light: the gamma
+    // slider's row, then the object's and the light's, the frame time, the
+    // file name and the Save button (Dear ImGui's default style).
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --width 480 --height 360"));
+    std::this_thread::sleep_for(500ms);
+    const litkit::Image before = screenshot();
+    // Drag the gamma slider to its right end: gamma 4.
+    // (Dear ImGui reads the button once a frame: hold it across frames.)
+    xdo("mousemove --window " + window + " 60 90 sleep 0.1 mousedown 1 sleep 0.1 mousemove --window " +
+        window + " 200 90 sleep 0.1 mousemove --window " + window + " 300 90 sleep 0.1 mouseup 1");
+    std::this_thread::sleep_for(400ms);
+    const litkit::Image after = screenshot();
+    // The picture beside the panel changed (the ball's right side).
+    EXPECT_GT(largest_difference(before, after), 8);
+
+    // Type a file name and press Save as...
+    xdo("mousemove --window " + window + " 100 168 sleep 0.1 click 1 sleep 0.1");
+    xdo("type --delay 30 saved.toml");
+    xdo("sleep 0.1 mousemove --window " + window + " 40 191 sleep 0.1 click 1");
+    const auto deadline = std::chrono::steady_clock::now() + 3s;
+    while (!fs::exists(dir / "saved.toml") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(40ms);
+    ASSERT_TRUE(fs::exists(dir / "saved.toml")) << text_of("stderr.txt");
+    // The saved scene renders to the picture the window shows, panel aside:
+    // compare the part right of the panel.
+    key("h");
+    std::this_thread::sleep_for(300ms);
+    const litkit::Image shown = screenshot();
+    const litkit::Image saved = rendered("", "saved.toml");
+    EXPECT_LE(largest_difference(shown, saved), 1);
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, InvalidSceneIsRefusedLikeRender) {
+    write_scene("[room]\nwidth = 0\n");
+    const auto refused = run_command("cd " + quoted(dir) + " && DISPLAY=" + display().name() + " '" LITKIT_CLI
+                                     "' view scene.toml");
+    const auto render = run_command("cd " + quoted(dir) + " && '" LITKIT_CLI "' render scene.toml");
+    EXPECT_EQ(refused.status, 2);
+    EXPECT_EQ(refused.output, render.output);
+}
+
+TEST_F(Viewer, SigtermEndsItCleanly) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
+    ASSERT_LE(wait_for(rendered("")), 1);
+    kill(pid, SIGTERM);
+    EXPECT_EQ(wait_exit(), 0);
+}
