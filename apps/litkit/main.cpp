@@ -64,6 +64,7 @@ struct CompareArguments {
 
 struct ViewArguments {
     SceneArguments scene;
+    int orbit_frames = 0;
     bool no_ui = false;
     bool yes = false;
 };
@@ -426,6 +427,7 @@ int run_view(const ViewArguments& arguments) {
     options.gl_backend = arguments.scene.backend == "gl";
     options.threads = arguments.scene.threads.value_or(0);
     options.show_panel = !arguments.no_ui;
+    options.benchmark_frames = arguments.orbit_frames;
     // A reload reads the files as at start; [lighting] left out now takes
     // the defaults (there is no terminal to ask in a window).
     options.load = [arguments] {
@@ -627,6 +629,9 @@ int main(int argc, char** argv) {
         "view", "A live window on the scene: orbit, switch models at a key, edit, reload on save");
     add_scene_options(view, view_arguments.scene);
     view->add_flag("--no-ui", view_arguments.no_ui, "Start with the panel hidden (H shows it)");
+    view->add_option("--orbit-frames", view_arguments.orbit_frames,
+                     "Measure: orbit N frames as fast as they show, print frames/s and close")
+        ->check(CLI::Range(1, 100000));
     view->add_flag("-y,--yes", view_arguments.yes,
                    "Use the default models (phong / phong) where [lighting] leaves one out");
 

@@ -268,11 +268,16 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         bool running = true;
         int drag_button = 0;
         auto last_turn = clock_type::now();
+        int benchmark_done = -1;  // frames shown while measuring (-1: the first is not timed)
+        clock_type::time_point benchmark_start;
         while (running) {
             // Wait for something to do: events, the next reload check, or the
             // next turntable step. Nothing is rendered in between.
             const int timeout =
-                dirty || panel_frames > 0 ? 0 : turntable || drag_button ? 10 : reload_at ? 20 : 100;
+                dirty || panel_frames > 0 || options.benchmark_frames > 0 ? 0
+                : turntable || drag_button                                 ? 10
+                : reload_at                                                ? 20
+                                                                           : 100;
             SDL_Event event;
             bool have = SDL_WaitEventTimeout(&event, timeout) == 1;
             if (have && show_panel) redraw = true;  // the panel answers every event
@@ -358,7 +363,19 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             }
             if (!running) break;
 
-            if (turntable) {
+            if (options.benchmark_frames > 0 && !dirty) {
+                if (benchmark_done == 0) benchmark_start = clock_type::now();
+                if (++benchmark_done > options.benchmark_frames) {
+                    const double ms = std::chrono::duration<double, std::milli>(clock_type::now() -
+                                                                                benchmark_start).count();
+                    std::printf("orbit: %d frames of %dx%d in %.1f ms: %.1f frames/s\n",
+                                options.benchmark_frames, image.width, image.height, ms,
+                                1000.0 * options.benchmark_frames / ms);
+                    break;
+                }
+                camera.orbit(glm::radians(2.0f), 0.0f);
+                dirty = true;
+            } else if (turntable) {
                 const auto now = clock_type::now();
                 const float seconds = std::chrono::duration<float>(now - last_turn).count();
                 last_turn = now;

@@ -16,6 +16,9 @@ struct ViewerOptions {
     bool gl_backend = false;
     int threads = 0;
     bool show_panel = true;
+    // A measurement (docs/performance.md): orbit this many frames, 2° each,
+    // as fast as they render and show, print the frame rate and close.
+    int benchmark_frames = 0;
     // The command line's replacements, applied again after every reload.
     std::function<void(litkit::Scene&)> apply_options;
     // Reading the files as `render` does (validation, R11); throws like it.
