@@ -182,9 +182,12 @@ protected:
         }
         const auto deadline = std::chrono::steady_clock::now() + 15s;
         while (window.empty() && std::chrono::steady_clock::now() < deadline) {
+            // The window's id: the first line that is a number (xdotool may
+            // print warnings too).
             const auto found = xdo("search --pid " + std::to_string(pid) + " --name 'litkit view'");
             std::istringstream lines(found.output);
-            std::getline(lines, window);
+            for (std::string line; window.empty() && std::getline(lines, line);)
+                if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos) window = line;
             if (window.empty()) std::this_thread::sleep_for(50ms);
         }
         ASSERT_FALSE(window.empty()) << "no window; stderr:\n" << text_of("stderr.txt");
@@ -385,5 +388,19 @@ TEST_F(Viewer, SigtermEndsItCleanly) {
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
     ASSERT_LE(wait_for(rendered("")), 1);
     kill(pid, SIGTERM);
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, OpenGlBackendDrawsInTheWindowsOwnContext) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui --backend gl"));
+    EXPECT_LE(wait_for(rendered("--backend gl")), 1) << "at start";
+    key("2");
+    EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1) << "after key 2";
+    xdo("mousemove --window " + window + " 80 60 mousedown 1 mousemove --window " + window +
+        " 120 70 mouseup 1");
+    std::this_thread::sleep_for(300ms);
+    key("r");
+    EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1) << "after an orbit and R";
+    key("q");
     EXPECT_EQ(wait_exit(), 0);
 }

@@ -30,20 +30,35 @@ public:
     // world-space vertices. Throws GlError, or IoError for an unreadable
     // mesh file. `options.threads` and `options.kernels` do not apply.
     explicit GlRenderer(const Scene& scene, RenderOptions options = {});
+    // Draws with the OpenGL (3.3 core or later) context current on this
+    // thread, such as a window's (litkit view), instead of a headless one of
+    // its own. That context must stay current while the renderer is used.
+    struct CurrentContext {};
+    GlRenderer(const Scene& scene, RenderOptions options, CurrentContext);
     ~GlRenderer();
     GlRenderer(const GlRenderer&) = delete;
     GlRenderer& operator=(const GlRenderer&) = delete;
 
+    // The scene to draw from now on: a new camera, size, lights' values,
+    // materials or gamma keep the programs and the uploaded meshes; other
+    // changes build them again.
+    void update(const Scene& scene);
+
     // Draws one frame at the scene's output size and reads it back.
     Image render();
     void render_into(Image& image);
+    // Draws one frame and copies it, pixel for pixel, to the bottom-left
+    // corner of `framebuffer` (0: the window's) of the current context.
+    void draw_to(unsigned framebuffer);
 
     std::size_t triangle_count() const;
     // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6".
     std::string description() const;
 
-private:
     struct Impl;
+
+private:
+    GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -136,6 +136,11 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
 std::string_view default_scene_toml();
 Scene default_scene();
 
+// True when the two objects have the same mesh in the same place: the same
+// shape with the same parameters, position, rotation and scale (what a
+// renderer's update can keep).
+bool same_geometry(const SceneObject& a, const SceneObject& b);
+
 // world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
 glm::mat4 object_to_world(const SceneObject& object);
 

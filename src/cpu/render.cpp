@@ -709,36 +709,6 @@ void Renderer::render_into(Image& image) {
     });
 }
 
-namespace {
-
-// True when the two objects have the same mesh in the same place: the same
-// shape with the same parameters, position, rotation and scale.
-bool same_geometry(const SceneObject& a, const SceneObject& b) {
-    if (a.position != b.position || a.rotation_degrees != b.rotation_degrees || a.scale != b.scale)
-        return false;
-    if (a.shape.index() != b.shape.index()) return false;
-    return std::visit(
-        [&](const auto& shape) {
-            using S = std::decay_t<decltype(shape)>;
-            const S& other = std::get<S>(b.shape);
-            if constexpr (std::is_same_v<S, CubeShape>) return shape.size == other.size;
-            else if constexpr (std::is_same_v<S, SphereShape>)
-                return shape.radius == other.radius && shape.segments == other.segments &&
-                       shape.rings == other.rings;
-            else if constexpr (std::is_same_v<S, TorusShape>)
-                return shape.major_radius == other.major_radius &&
-                       shape.minor_radius == other.minor_radius && shape.segments == other.segments &&
-                       shape.sides == other.sides;
-            else if constexpr (std::is_same_v<S, TeapotShape>)
-                return shape.size == other.size && shape.subdivisions == other.subdivisions;
-            else
-                return shape.file == other.file;
-        },
-        a.shape);
-}
-
-}  // namespace
-
 void Renderer::update(const Scene& scene) {
     Impl& impl = *impl_;
     bool same = scene.objects.size() == impl.scene.objects.size();

@@ -85,6 +85,8 @@ struct GlRenderer::Impl {
     // Declaration order is destruction order reversed: GL objects go before
     // the context that owns them.
     std::optional<core::HeadlessContext> context;
+    Scene scene;  // as drawn
+    RenderOptions options;
     std::map<std::pair<Reflection, Shading>, GLuint> programs;
     std::vector<core::GpuMesh> meshes;
     std::vector<core::DrawItem> items;
@@ -94,11 +96,12 @@ struct GlRenderer::Impl {
     std::size_t triangles = 0;
 
     ~Impl() {
-        if (!context) return;
-        try {
-            context->make_current();  // another renderer's may be current
-        } catch (const std::runtime_error&) {
-            return;  // the context goes with its objects
+        if (context) {
+            try {
+                context->make_current();  // another renderer's may be current
+            } catch (const std::runtime_error&) {
+                return;  // the context goes with its objects
+            }
         }
         target.reset();
         for (core::GpuMesh& mesh : meshes) core::release_mesh(mesh);
@@ -106,13 +109,77 @@ struct GlRenderer::Impl {
     }
 };
 
-GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::make_unique<Impl>()) {
-    require_gl_libraries();
+namespace {
+
+// The camera, background, gamma and framebuffer size of a frame.
+void set_frame(GlRenderer::Impl& gl, const Scene& scene) {
+    const Observer& o = scene.observer;
+    const float aspect = static_cast<float>(scene.output.width) / static_cast<float>(scene.output.height);
+    gl.frame.view_projection =
+        core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
+    gl.frame.eye = o.position;
+    gl.frame.background =
+        glm::vec3(scene.output.background[0], scene.output.background[1], scene.output.background[2]) /
+        255.0f;
+    gl.frame.gamma = scene.output.gamma;
+    if (!gl.target || gl.target->width() != scene.output.width ||
+        gl.target->height() != scene.output.height) {
+        gl.target.reset();
+        gl.target.emplace(scene.output.width, scene.output.height);
+    }
+}
+
+}  // namespace
+
+GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
+    : GlRenderer(scene, options, CurrentContext{}, true) {}
+
+void GlRenderer::update(const Scene& scene) {
     Impl& gl = *impl_;
+    // What the programs and the uploaded meshes depend on: the objects'
+    // geometry and models, and how many lights the shaders hold.
+    const auto models = [](const Scene& s, const RenderOptions& o, std::size_t i) {
+        const SceneObject& object = s.objects[i];
+        return std::pair(object.reflection.value_or(s.reflection.value_or(o.fallback_reflection)),
+                         object.shading.value_or(s.shading.value_or(o.fallback_shading)));
+    };
+    bool same = scene.objects.size() == gl.scene.objects.size() &&
+                scene.lights.size() == gl.scene.lights.size();
+    for (std::size_t i = 0; same && i < scene.objects.size(); ++i)
+        same = same_geometry(scene.objects[i], gl.scene.objects[i]) &&
+               models(scene, gl.options, i) == models(gl.scene, gl.options, i);
+    if (!same) {
+        GlRenderer fresh(scene, gl.options, CurrentContext{}, gl.context.has_value());
+        std::swap(impl_, fresh.impl_);
+        return;
+    }
     try {
-        gl.context.emplace();
+        if (gl.context) gl.context->make_current();
+        gl.lights.clear();
+        for (const equations::PreparedLight& light : detail::prepared_lights(scene))
+            gl.lights.push_back(light_data(light));
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            gl.items[i].material = material_data(scene.objects[i].material);
+        set_frame(gl, scene);
+        gl.scene = scene;
     } catch (const std::runtime_error& error) {
-        throw GlError(std::string("OpenGL is not available: ") + error.what());
+        throw GlError(error.what());
+    }
+}
+
+GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext context)
+    : GlRenderer(scene, options, context, false) {}
+
+GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& gl = *impl_;
+    if (headless) {
+        require_gl_libraries();
+        try {
+            gl.context.emplace();
+        } catch (const std::runtime_error& error) {
+            throw GlError(std::string("OpenGL is not available: ") + error.what());
+        }
     }
     try {
         for (const equations::PreparedLight& light : detail::prepared_lights(scene))
@@ -143,17 +210,9 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::m
                                                 scene.objects[i].shading.value_or(scene_shading)}),
                                 &gl.meshes[i], material_data(scene.objects[i].material)});
 
-        const Observer& o = scene.observer;
-        const float aspect =
-            static_cast<float>(scene.output.width) / static_cast<float>(scene.output.height);
-        gl.frame.view_projection =
-            core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
-        gl.frame.eye = o.position;
-        gl.frame.background = glm::vec3(scene.output.background[0], scene.output.background[1],
-                                        scene.output.background[2]) /
-                              255.0f;
-        gl.frame.gamma = scene.output.gamma;
-        gl.target.emplace(scene.output.width, scene.output.height);
+        set_frame(gl, scene);
+        gl.scene = scene;
+        gl.options = options;
     } catch (const std::runtime_error& error) {
         if (dynamic_cast<const IoError*>(&error)) throw;
         throw GlError(error.what());
@@ -171,7 +230,7 @@ Image GlRenderer::render() {
 void GlRenderer::render_into(Image& image) {
     Impl& gl = *impl_;
     try {
-        gl.context->make_current();
+        if (gl.context) gl.context->make_current();
         core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
     } catch (const std::runtime_error& error) {
         throw GlError(error.what());
@@ -181,10 +240,32 @@ void GlRenderer::render_into(Image& image) {
     gl.target->read_rgb(image.rgb.data());
 }
 
+void GlRenderer::draw_to(unsigned framebuffer) {
+    Impl& gl = *impl_;
+    try {
+        if (gl.context) gl.context->make_current();
+        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
+    } catch (const std::runtime_error& error) {
+        throw GlError(error.what());
+    }
+    // Both have OpenGL's bottom row first: a straight copy.
+    const int w = gl.target->width(), h = gl.target->height();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl.target->framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // draw_frame leaves depth testing and culling on; leave the context as
+    // a window's drawing (a panel, say) expects it.
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(0);
+    glBindVertexArray(0);
+}
+
 std::size_t GlRenderer::triangle_count() const { return impl_->triangles; }
 
 std::string GlRenderer::description() const {
-    impl_->context->make_current();
+    if (impl_->context) impl_->context->make_current();
     return gl_string(GL_RENDERER) + ", OpenGL " + gl_string(GL_VERSION);
 }
 

@@ -6,6 +6,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <type_traits>
+#include <variant>
+
 #include "litkit/shapes.hpp"
 
 namespace litkit {
@@ -24,6 +27,30 @@ std::string_view shape_type_name(const Shape& shape) {
 FileLoc Scene::location_of(std::string_view path) const {
     auto found = locations.find(path);
     return found == locations.end() ? FileLoc{} : found->second;
+}
+
+bool same_geometry(const SceneObject& a, const SceneObject& b) {
+    if (a.position != b.position || a.rotation_degrees != b.rotation_degrees || a.scale != b.scale)
+        return false;
+    if (a.shape.index() != b.shape.index()) return false;
+    return std::visit(
+        [&](const auto& shape) {
+            using S = std::decay_t<decltype(shape)>;
+            const S& other = std::get<S>(b.shape);
+            if constexpr (std::is_same_v<S, CubeShape>) return shape.size == other.size;
+            else if constexpr (std::is_same_v<S, SphereShape>)
+                return shape.radius == other.radius && shape.segments == other.segments &&
+                       shape.rings == other.rings;
+            else if constexpr (std::is_same_v<S, TorusShape>)
+                return shape.major_radius == other.major_radius &&
+                       shape.minor_radius == other.minor_radius && shape.segments == other.segments &&
+                       shape.sides == other.sides;
+            else if constexpr (std::is_same_v<S, TeapotShape>)
+                return shape.size == other.size && shape.subdivisions == other.subdivisions;
+            else
+                return shape.file == other.file;
+        },
+        a.shape);
 }
 
 glm::mat4 object_to_world(const SceneObject& object) {

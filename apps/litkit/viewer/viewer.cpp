@@ -85,34 +85,6 @@ bool inside_room(const litkit::Room& room, const glm::vec3& p) {
            std::abs(p.z) <= room.depth / 2;
 }
 
-// A renderer of either backend behind one face.
-class Drawer {
-public:
-    Drawer(const litkit::Scene& scene, bool gl, int threads) : gl_(gl), threads_(threads) {
-        rebuild(scene);
-    }
-    void update(const litkit::Scene& scene) {
-        if (cpu_) cpu_->update(scene);
-        else rebuild(scene);  // the OpenGL backend uploads again
-    }
-    void render_into(litkit::Image& image) {
-        if (cpu_) cpu_->render_into(image);
-        else gpu_->render_into(image);
-    }
-
-private:
-    void rebuild(const litkit::Scene& scene) {
-        litkit::RenderOptions options;
-        options.threads = threads_;
-        if (gl_) gpu_ = std::make_unique<litkit::GlRenderer>(scene, options);
-        else cpu_ = std::make_unique<litkit::Renderer>(scene, options);
-    }
-    bool gl_;
-    int threads_;
-    std::unique_ptr<litkit::Renderer> cpu_;
-    std::unique_ptr<litkit::GlRenderer> gpu_;
-};
-
 // Shows an RGB image 1:1 in the window's framebuffer.
 class Screen {
 public:
@@ -152,6 +124,45 @@ public:
 private:
     GLuint texture_ = 0, framebuffer_ = 0;
     int width_ = 0, height_ = 0;
+};
+
+// A renderer of either backend behind one face. The CPU backend renders into
+// an image that the screen shows; the OpenGL backend draws with the window's
+// own context (the same shaders as `render --backend gl`) and copies its
+// frame into the window.
+class Drawer {
+public:
+    Drawer(const litkit::Scene& scene, bool gl, int threads) {
+        litkit::RenderOptions options;
+        options.threads = threads;
+        if (gl) gpu_ = std::make_unique<litkit::GlRenderer>(scene, options, litkit::GlRenderer::CurrentContext{});
+        else cpu_ = std::make_unique<litkit::Renderer>(scene, options);
+    }
+    void update(const litkit::Scene& scene) {
+        if (cpu_) cpu_->update(scene);
+        else gpu_->update(scene);
+    }
+    void render(litkit::Image& image) {
+        if (cpu_) cpu_->render_into(image);
+    }
+    void present(Screen& screen, const litkit::Image& image, int width, int height) {
+        if (cpu_) {
+            screen.show(image, width, height);
+            return;
+        }
+        glViewport(0, 0, width, height);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        gpu_->draw_to(0);
+    }
+    // The picture as it stands (for S).
+    void snapshot(litkit::Image& image) {
+        if (gpu_) gpu_->render_into(image);
+    }
+
+private:
+    std::unique_ptr<litkit::Renderer> cpu_;
+    std::unique_ptr<litkit::GlRenderer> gpu_;
 };
 
 // "scene-1.png", "scene-2.png", …: the first name not taken.
@@ -235,6 +246,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         FileWatcher watcher(files_of(options, file_scene));
         std::optional<clock_type::time_point> reload_at;
         double frame_ms = 0.0;
+        int shown_width = 0, shown_height = 0;
         char save_path[512] = "";
         bool confirm_overwrite = false;
         std::string save_message;
@@ -308,6 +320,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                             const fs::path name = next_screenshot_name(
                                 options.files.empty() ? "default" : options.files.front().stem().string());
                             try {
+                                if (drawer) drawer->snapshot(image);
                                 litkit::write_png(image, name);
                                 std::cout << "litkit: wrote " << name.string() << "\n" << std::flush;
                             } catch (const litkit::Error& error) {
@@ -369,7 +382,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     const double ms = std::chrono::duration<double, std::milli>(clock_type::now() -
                                                                                 benchmark_start).count();
                     std::printf("orbit: %d frames of %dx%d in %.1f ms: %.1f frames/s\n",
-                                options.benchmark_frames, image.width, image.height, ms,
+                                options.benchmark_frames, shown_width, shown_height, ms,
                                 1000.0 * options.benchmark_frames / ms);
                     break;
                 }
@@ -424,7 +437,9 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 try {
                     if (!drawer) drawer = std::make_unique<Drawer>(shown, options.gl_backend, options.threads);
                     else drawer->update(shown);
-                    drawer->render_into(image);
+                    drawer->render(image);
+                    shown_width = shown.output.width;
+                    shown_height = shown.output.height;
                 } catch (const litkit::Error& error) {
                     diagnostics = std::string(error.what()) + "\n";
                     std::cerr << diagnostics << std::flush;
@@ -444,7 +459,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
 
             int w = 0, h = 0;
             SDL_GL_GetDrawableSize(window, &w, &h);
-            if (image.width > 0) screen.show(image, w, h);
+            if (drawer) drawer->present(screen, image, w, h);
             if (show_panel) {
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplSDL2_NewFrame();
@@ -536,7 +551,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                         light.light.kind);
                     ImGui::TreePop();
                 }
-                ImGui::Text("frame %.1f ms, %dx%d", frame_ms, image.width, image.height);
+                ImGui::Text("frame %.1f ms, %dx%d", frame_ms, shown_width, shown_height);
                 ImGui::Separator();
                 ImGui::InputText("file", save_path, sizeof save_path);
                 if (ImGui::Button(confirm_overwrite ? "Overwrite" : "Save as...") && save_path[0] != '\0') {
