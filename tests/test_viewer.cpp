@@ -43,17 +43,22 @@ public:
             const int devnull = open("/dev/null", O_WRONLY);
             dup2(devnull, 2);
             const std::string fd = std::to_string(fds[1]);
+            // -noreset: by default the server resets when its last client
+            // leaves, and a viewer started in that moment finds no display.
             execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24",
-                   "-nolisten", "tcp", static_cast<char*>(nullptr));
+                   "-nolisten", "tcp", "-noreset", static_cast<char*>(nullptr));
             _exit(127);
         }
         close(fds[1]);
         char buffer[32] = {};
         const ssize_t n = read(fds[0], buffer, sizeof buffer - 1);
-        close(fds[0]);
+        // Kept open: Xvfb writes the number again when it starts a new
+        // server generation, and ends if it cannot.
+        number_fd_ = fds[0];
         if (n > 0) name_ = ":" + std::string(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
     }
     ~Display() {
+        if (number_fd_ >= 0) close(number_fd_);
         if (pid_ > 0) {
             kill(pid_, SIGTERM);
             waitpid(pid_, nullptr, 0);
@@ -63,6 +68,7 @@ public:
 
 private:
     pid_t pid_ = -1;
+    int number_fd_ = -1;
     std::string name_;
 };
 
@@ -181,6 +187,7 @@ protected:
             _exit(127);
         }
         const auto deadline = std::chrono::steady_clock::now() + 15s;
+        std::string searched;
         while (window.empty() && std::chrono::steady_clock::now() < deadline) {
             // The window's id: the first line that is a number (xdotool may
             // print warnings too).
@@ -188,15 +195,19 @@ protected:
             std::istringstream lines(found.output);
             for (std::string line; window.empty() && std::getline(lines, line);)
                 if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos) window = line;
+            searched = found.output;
             if (window.empty()) std::this_thread::sleep_for(50ms);
         }
-        ASSERT_FALSE(window.empty()) << "no window; stderr:\n" << text_of("stderr.txt");
+        ASSERT_FALSE(window.empty()) << "no window on display [" << display().name() << "]; xdotool said:\n"
+                                     << searched << "\nstderr:\n" << text_of("stderr.txt");
     }
 
     litkit_test::CommandRun xdo(const std::string& arguments) const {
         return run_command("DISPLAY=" + display().name() + " xdotool " + arguments);
     }
-    void key(const std::string& name) const { xdo("key --window " + window + " " + name); }
+    // A key press through XTEST, as a keyboard makes it, to the viewer's
+    // window given the focus.
+    void key(const std::string& name) const { xdo("windowfocus " + window + " key " + name); }
 
     litkit::Image screenshot() const {
         const fs::path file = dir / "window.xwd";
@@ -230,9 +241,19 @@ protected:
         return std::string((std::istreambuf_iterator<char>(in)), {});
     }
     bool alive() const { return pid > 0 && waitpid(pid, nullptr, WNOHANG) == 0; }
+    // The viewer's exit status; one that has not ended within 5 s is killed
+    // (so that its window cannot cover the next test's) and counts as -1.
     int wait_exit() {
         int status = -1;
-        for (int i = 0; i < 100 && waitpid(pid, &status, WNOHANG) == 0; ++i) std::this_thread::sleep_for(50ms);
+        pid_t done = 0;
+        for (int i = 0; i < 100 && (done = waitpid(pid, &status, WNOHANG)) == 0; ++i)
+            std::this_thread::sleep_for(50ms);
+        if (done == 0) {
+            kill(pid, SIGKILL);
+            waitpid(pid, nullptr, 0);
+            pid = -1;
+            return -1;
+        }
         pid = -1;
         return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
