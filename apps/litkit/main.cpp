@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -39,6 +40,8 @@ struct SceneArguments {
     std::optional<int> height;
     std::optional<std::string> reflection;
     std::optional<std::string> shading;
+    std::optional<std::string> normals;
+    std::optional<float> crease_angle;
     int threads = 0;
     std::string backend = "cpu";
 };
@@ -75,6 +78,21 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+    command->add_option("--normals", arguments.normals, "How vertex normals weight faces")
+        ->check(CLI::IsMember({"mean", "area", "angle", "max", "file"}));
+    command
+        ->add_option("--crease-angle", arguments.crease_angle,
+                     "Split normals between faces more than this many degrees apart")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                // docs/spec.md §9.2: (0, 180]. Runs before CLI11 converts the text.
+                char* end = nullptr;
+                const float degrees = std::strtof(text.c_str(), &end);
+                return end != text.c_str() && *end == '\0' && degrees > 0.0f && degrees <= 180.0f
+                           ? std::string()
+                           : "crease angle " + text + " is not in (0, 180] degrees";
+            },
+            "DEGREES in (0, 180]"));
     if (!rendering) return;
     command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, 1024));
@@ -190,6 +208,8 @@ litkit::Scene load(const SceneArguments& arguments) {
     if (arguments.height) scene.output.height = *arguments.height;
     if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
     if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
+    if (arguments.normals) scene.normals = litkit::parse_normals(*arguments.normals);
+    if (arguments.crease_angle) scene.crease_angle_degrees = *arguments.crease_angle;
     return scene;
 }
 

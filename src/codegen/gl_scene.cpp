@@ -4,8 +4,9 @@
 
 namespace litkit::detail {
 
-GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading) {
-    WorldMesh mesh = world_mesh(object);
+GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
+                   const NormalOptions& normals) {
+    WorldMesh mesh = world_mesh(object, normals);
     GlObject gl;
     gl.triangles = mesh.triangles.size();
     gl.material = object.material;

@@ -25,7 +25,9 @@ struct GlObject {
 };
 
 // Throws IoError for an unreadable mesh file.
-GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading);
+// `normals`: how its vertex normals are found (normal_options, docs/spec.md §9.2).
+GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
+                   const NormalOptions& normals);
 
 std::vector<equations::PreparedLight> prepared_lights(const Scene& scene);
 

@@ -203,7 +203,7 @@ void Renderer::Impl::prepare() {
     const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
 
     for (const SceneObject& object : scene.objects) {
-        WorldMesh mesh = world_mesh(object);
+        WorldMesh mesh = world_mesh(object, normal_options(scene, object));
         PreparedObject prepared;
         prepared.positions = std::move(mesh.positions);
         prepared.normals = std::move(mesh.normals);

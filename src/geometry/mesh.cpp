@@ -8,11 +8,14 @@
 #include <cstdint>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -316,48 +319,212 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     return glm::vec3(cross / length);
 }
 
-std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
+namespace {
+
+void check_triangle_indices(const Mesh& mesh, const char* function) {
     const std::size_t position_count = mesh.positions.size();
     if (position_count > std::numeric_limits<std::uint32_t>::max()) {
-        throw std::length_error("vertex_normals: more positions than 32-bit indices can reach");
+        throw std::length_error(std::string(function) +
+                                ": more positions than 32-bit indices can reach");
     }
     for (const auto& triangle : mesh.triangles) {
         for (const std::uint32_t corner : triangle) {
             if (corner >= position_count) {
-                throw std::out_of_range("vertex_normals: triangle index " + std::to_string(corner) +
-                                        " out of range (" + std::to_string(position_count) +
-                                        " positions)");
+                throw std::out_of_range(std::string(function) + ": triangle index " +
+                                        std::to_string(corner) + " out of range (" +
+                                        std::to_string(position_count) + " positions)");
             }
         }
     }
+}
 
-    const std::vector<std::uint32_t> vertex_of_position = weld(mesh.positions);
+// Each triangle's part in the normal of each of its corners (entry 3·t + k),
+// with the weights of docs/spec.md §9.2, and whether it takes part at all.
+struct CornerWeights {
+    std::vector<std::uint32_t> vertex_of_position;  // the welded vertex of each position
+    std::vector<glm::vec3> weights;
+    std::vector<bool> usable;  // per triangle
+};
 
-    // Summing unit normals and normalising gives the direction of their plain
-    // mean (DD9), whatever the count.
-    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
-    for (const auto& triangle : mesh.triangles) {
-        const std::uint32_t vertex_a = vertex_of_position[triangle[0]];
-        const std::uint32_t vertex_b = vertex_of_position[triangle[1]];
-        const std::uint32_t vertex_c = vertex_of_position[triangle[2]];
+// The weighted normals of triangle (a, b, c) at its corners; false for a
+// triangle that takes no part (zero area, which includes a zero-length
+// edge, or non-finite).
+bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
+                      const glm::vec3& c, glm::vec3* out) {
+    if (weighting == Normals::Mean) {
+        // DD9 exactly as before docs/spec.md §9.2: the DD8 normal, in float.
+        const glm::vec3 normal = face_normal(a, b, c);
+        out[0] = out[1] = out[2] = normal;
+        return normal != glm::vec3(0.0f);
+    }
+    const glm::dvec3 corners[3] = {glm::dvec3(a), glm::dvec3(b), glm::dvec3(c)};
+    // (b − a) × (c − a): the same vector, e1 × e2, at every corner.
+    const glm::dvec3 cross = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
+    const double length = glm::length(cross);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        out[0] = out[1] = out[2] = glm::vec3(0.0f);
+        return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 e1 = corners[(k + 1) % 3] - corners[k];
+        const glm::dvec3 e2 = corners[(k + 2) % 3] - corners[k];
+        switch (weighting) {
+            case Normals::Area: out[k] = glm::vec3(cross); break;
+            case Normals::Angle:
+                out[k] = glm::vec3(std::atan2(length, glm::dot(e1, e2)) / length * cross);
+                break;
+            default:  // Normals::Max (Max 1999)
+                out[k] = glm::vec3(cross / (glm::dot(e1, e1) * glm::dot(e2, e2)));
+                break;
+        }
+    }
+    return true;
+}
+
+CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function) {
+    if (weighting == Normals::File) {
+        throw std::invalid_argument(std::string(function) +
+                                    ": \"file\" normals come from the mesh file, not from "
+                                    "weighting faces");
+    }
+    check_triangle_indices(mesh, function);
+    CornerWeights result;
+    result.vertex_of_position = weld(mesh.positions);
+    result.weights.resize(mesh.triangles.size() * 3);
+    result.usable.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& triangle = mesh.triangles[t];
+        const std::uint32_t vertex_a = result.vertex_of_position[triangle[0]];
+        const std::uint32_t vertex_b = result.vertex_of_position[triangle[1]];
+        const std::uint32_t vertex_c = result.vertex_of_position[triangle[2]];
+        glm::vec3* out = &result.weights[3 * t];
         // Two corners welded into one vertex make the triangle zero-area in
         // the welded mesh, whatever its tiny area before welding.
-        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) continue;
+        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) {
+            out[0] = out[1] = out[2] = glm::vec3(0.0f);
+            continue;
+        }
+        result.usable[t] = triangle_weights(weighting, mesh.positions[triangle[0]],
+                                            mesh.positions[triangle[1]],
+                                            mesh.positions[triangle[2]], out);
+    }
+    return result;
+}
 
-        const glm::vec3 normal = face_normal(
-            mesh.positions[triangle[0]], mesh.positions[triangle[1]], mesh.positions[triangle[2]]);
-        normal_sums[vertex_a] += normal;
-        normal_sums[vertex_b] += normal;
-        normal_sums[vertex_c] += normal;
+glm::vec3 normalized_or_zero(const glm::vec3& sum) {
+    const float length = glm::length(sum);
+    return length > 0.0f ? sum / length : glm::vec3(0.0f);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
+    return vertex_normals(mesh, Normals::Mean);
+}
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting) {
+    const CornerWeights corners = corner_weights(mesh, weighting, "vertex_normals");
+    const std::size_t position_count = mesh.positions.size();
+
+    // Summing the weighted normals and normalising gives the direction of
+    // their weighted mean (DD9, docs/spec.md §9.2), whatever the count.
+    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!corners.usable[t]) continue;
+        for (int k = 0; k < 3; ++k) {
+            normal_sums[corners.vertex_of_position[mesh.triangles[t][k]]] +=
+                corners.weights[3 * t + k];
+        }
     }
 
     std::vector<glm::vec3> normals(position_count, glm::vec3(0.0f));
     for (std::size_t index = 0; index < position_count; ++index) {
-        const glm::vec3& sum = normal_sums[vertex_of_position[index]];
-        const float length = glm::length(sum);
-        if (length > 0.0f) normals[index] = sum / length;
+        normals[index] = normalized_or_zero(normal_sums[corners.vertex_of_position[index]]);
     }
     return normals;
+}
+
+std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
+                                      float crease_angle_degrees) {
+    if (!(crease_angle_degrees > 0.0f && crease_angle_degrees <= 180.0f)) {
+        throw std::invalid_argument("corner_normals: crease angle " +
+                                    std::to_string(crease_angle_degrees) +
+                                    " is outside (0, 180] degrees");
+    }
+    const CornerWeights corners = corner_weights(mesh, weighting, "corner_normals");
+    const std::size_t triangle_count = mesh.triangles.size();
+
+    std::vector<glm::vec3> unit_normals(triangle_count, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        const auto& triangle = mesh.triangles[t];
+        unit_normals[t] = face_normal(mesh.positions[triangle[0]], mesh.positions[triangle[1]],
+                                      mesh.positions[triangle[2]]);
+    }
+
+    // The usable corners at each welded vertex, in triangle order (a
+    // counting sort), so that a corner whose every neighbour counts sums the
+    // very terms of vertex_normals in the very same order.
+    std::vector<std::uint32_t> first_corner(mesh.positions.size() + 1, 0);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (const std::uint32_t position : mesh.triangles[t]) {
+            ++first_corner[corners.vertex_of_position[position] + 1];
+        }
+    }
+    std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
+    std::vector<std::uint32_t> corners_at_vertex(first_corner.back());
+    {
+        std::vector<std::uint32_t> next(first_corner.begin(), first_corner.end() - 1);
+        for (std::size_t t = 0; t < triangle_count; ++t) {
+            if (!corners.usable[t]) continue;
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
+                corners_at_vertex[next[vertex]++] = static_cast<std::uint32_t>(3 * t + k);
+            }
+        }
+    }
+
+    const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
+    std::vector<glm::vec3> normals(triangle_count * 3, glm::vec3(0.0f));
+    for (std::size_t f = 0; f < triangle_count; ++f) {
+        const glm::vec3& own = unit_normals[f];
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[f][k]];
+            glm::vec3 sum(0.0f);
+            for (std::uint32_t at = first_corner[vertex]; at < first_corner[vertex + 1]; ++at) {
+                const std::uint32_t corner = corners_at_vertex[at];
+                const std::uint32_t g = corner / 3;
+                // An unusable triangle (a sliver between welded corners)
+                // takes its corners' unsplit vertex normals.
+                if (!corners.usable[f] || g == f ||
+                    double(glm::dot(own, unit_normals[g])) > limit) {
+                    sum += corners.weights[corner];
+                }
+            }
+            normals[3 * f + k] = normalized_or_zero(sum);
+        }
+    }
+    return normals;
+}
+
+std::string_view to_string(Normals normals) {
+    switch (normals) {
+        case Normals::Mean: return "mean";
+        case Normals::Area: return "area";
+        case Normals::Angle: return "angle";
+        case Normals::Max: return "max";
+        case Normals::File: return "file";
+    }
+    return "mean";
+}
+
+std::optional<Normals> parse_normals(std::string_view text) {
+    for (int i = 0; i < normals_count; ++i) {
+        const auto normals = static_cast<Normals>(i);
+        if (to_string(normals) == text) return normals;
+    }
+    return std::nullopt;
 }
 
 Bounds bounds(const Mesh& mesh) {

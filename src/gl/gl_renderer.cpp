@@ -126,7 +126,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::m
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data = detail::gl_object(object, reflection, shading);
+            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object));
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
         }
@@ -147,7 +147,9 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options) : impl_(std::m
         gl.frame.gamma = scene.output.gamma;
         gl.target.emplace(scene.output.width, scene.output.height);
     } catch (const std::runtime_error& error) {
-        if (dynamic_cast<const IoError*>(&error)) throw;
+        // Errors in the input (an unreadable mesh file, docs/spec.md §9.2's
+        // missing file normal) are the input's, not OpenGL's.
+        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error)) throw;
         throw GlError(error.what());
     }
 }

@@ -19,13 +19,15 @@ constexpr std::array<std::string_view, 6> top_level_keys{"room",   "observer", "
 constexpr std::array<std::string_view, 3> room_keys{"width", "height", "depth"};
 constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "up",
                                                         "fov",      "near",    "far"};
-constexpr std::array<std::string_view, 2> lighting_keys{"reflection", "shading"};
+constexpr std::array<std::string_view, 4> lighting_keys{"reflection", "shading", "normals",
+                                                        "crease_angle"};
 constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
 constexpr std::array<std::string_view, 5> material_keys{"color", "ka", "kd", "ks", "shininess"};
 
 constexpr std::array<std::string_view, 4> reflection_names{"lambert", "half-lambert", "phong",
                                                            "blinn-phong"};
 constexpr std::array<std::string_view, 3> shading_names{"flat", "gouraud", "phong"};
+constexpr std::array<std::string_view, 5> normals_names{"mean", "area", "angle", "max", "file"};
 
 const Family& light_family() {
     static const Family family{
@@ -43,7 +45,8 @@ const Family& light_family() {
 const Family& object_family() {
     static const Family family{
         "object",
-        {"name", "type", "position", "rotation", "scale", "material", "reflection", "shading"},
+        {"name", "type", "position", "rotation", "scale", "material", "reflection", "shading",
+         "normals", "crease_angle"},
         {
             {"cube", {"size"}},
             {"sphere", {"radius", "segments", "rings"}},
@@ -149,6 +152,9 @@ void SceneReader::read_lighting(const Site& site) {
                                               "reflection model", parse_reflection);
     scene_.shading = read_enum<Shading>(site, "shading", shading_names, "shading model",
                                         parse_shading);
+    scene_.normals =
+        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    scene_.crease_angle_degrees = read_number(site, "crease_angle");
 }
 
 void SceneReader::read_output(const Site& site) {
@@ -264,6 +270,9 @@ void SceneReader::read_object(const Site& site) {
                                               "reflection model", parse_reflection);
     object.shading =
         read_enum<Shading>(site, "shading", shading_names, "shading model", parse_shading);
+    object.normals =
+        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    object.crease_angle_degrees = read_number(site, "crease_angle");
     read_material(site, object.material);
     if (!type) return;
 
