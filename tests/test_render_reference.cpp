@@ -5,7 +5,8 @@
 // objects (make_sphere, make_cube, make_torus for the built-in shapes, and
 // object_mesh for teapots and mesh files; meshes have their own tests). The
 // world transform (docs/spec.md §2), face and vertex normals (DD8, DD9),
-// camera rays (§1), shading models (§3) and lighting (§4) are all computed
+// camera rays (§1), shading models (§3, and §9.2's faceted: the face normal
+// at the hit point) and lighting (§4) are all computed
 // here, by hand, in double, for a whole scene: the nearest hit over all
 // objects, each with its own reflection and shading (or [lighting]'s).
 //
@@ -496,6 +497,15 @@ ReferenceImage reference_render(const litkit::Scene& scene) {
                     lit = light_point(object.reflection, object.material, lights, p, normal, eye);
                     break;
                 }
+                case litkit::Shading::Faceted: {
+                    // docs/spec.md §9.2: at the hit point, with the face normal
+                    // (the triangle hit faces the eye).
+                    const dvec3 p = w0 * object.positions[tri[0]] + w1 * object.positions[tri[1]] +
+                                    w2 * object.positions[tri[2]];
+                    lit = light_point(object.reflection, object.material, lights, p,
+                                      object.face_normals[nearest.triangle], eye);
+                    break;
+                }
             }
             const std::size_t at = image.index(i, j);
             image.object[at] = nearest_object;
@@ -535,8 +545,9 @@ bool is_comparable(const ReferenceImage& ref, int i, int j) {
             }
         }
     }
-    if (ref.object[centre] >= 0 && ref.shading[centre] == litkit::Shading::Flat &&
-        several_triangles) {
+    const bool per_face_normal = ref.shading[centre] == litkit::Shading::Flat ||
+                                 ref.shading[centre] == litkit::Shading::Faceted;
+    if (ref.object[centre] >= 0 && per_face_normal && several_triangles) {
         for (int c = 0; c < 3; ++c)
             if (high[c] - low[c] > 2) return false;  // edge between flat colours
     }
@@ -834,7 +845,7 @@ constexpr std::array all_shapes{ShapeKind::Sphere, ShapeKind::Cube};
 constexpr std::array all_reflections{litkit::Reflection::Lambert, litkit::Reflection::HalfLambert,
                                      litkit::Reflection::Phong, litkit::Reflection::BlinnPhong};
 constexpr std::array all_shadings{litkit::Shading::Flat, litkit::Shading::Gouraud,
-                                  litkit::Shading::Phong};
+                                  litkit::Shading::Phong, litkit::Shading::Faceted};
 
 struct ModelCase {
     ShapeKind shape;

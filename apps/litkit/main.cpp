@@ -77,7 +77,7 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("--reflection", arguments.reflection, "Reflection model")
         ->check(CLI::IsMember({"lambert", "half-lambert", "phong", "blinn-phong"}));
     command->add_option("--shading", arguments.shading, "Shading model")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+        ->check(CLI::IsMember({"flat", "gouraud", "phong", "faceted"}));
     command->add_option("--normals", arguments.normals, "How vertex normals weight faces")
         ->check(CLI::IsMember({"mean", "area", "angle", "max", "file"}));
     command

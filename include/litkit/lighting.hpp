@@ -16,12 +16,12 @@ namespace litkit {
 
 // docs/spec.md §4, IM1–IM4.
 enum class Reflection { Lambert, HalfLambert, Phong, BlinnPhong };
-// docs/spec.md §3, DD8–DD10.
-enum class Shading { Flat, Gouraud, Phong };
+// docs/spec.md §3, DD8–DD10, and §9.2's faceted: lit per pixel with the face normal.
+enum class Shading { Flat, Gouraud, Phong, Faceted };
 
 // Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong".
 std::string_view to_string(Reflection reflection);
-// Scene-file spelling: "flat", "gouraud", "phong".
+// Scene-file spelling: "flat", "gouraud", "phong", "faceted".
 std::string_view to_string(Shading shading);
 std::optional<Reflection> parse_reflection(std::string_view text);
 std::optional<Shading> parse_shading(std::string_view text);

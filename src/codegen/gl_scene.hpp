@@ -14,7 +14,7 @@ namespace litkit::detail {
 
 struct GlObject {
     // Flat: 9 floats per vertex (position, face normal, centroid), three
-    // unshared vertices per triangle, no indices. Gouraud, Phong: 6 floats per
+    // unshared vertices per triangle, no indices. Gouraud, Phong, faceted: 6 floats per
     // vertex (position, vertex normal) and three indices per triangle.
     std::vector<float> vertices;
     std::vector<std::uint32_t> indices;

@@ -18,10 +18,11 @@ constexpr std::array<std::pair<Reflection, std::string_view>, 4> reflection_name
     {Reflection::Phong, "phong"},
     {Reflection::BlinnPhong, "blinn-phong"},
 }};
-constexpr std::array<std::pair<Shading, std::string_view>, 3> shading_names{{
+constexpr std::array<std::pair<Shading, std::string_view>, 4> shading_names{{
     {Shading::Flat, "flat"},
     {Shading::Gouraud, "gouraud"},
     {Shading::Phong, "phong"},
+    {Shading::Faceted, "faceted"},
 }};
 }  // namespace
 

@@ -26,7 +26,7 @@ constexpr std::array<std::string_view, 5> material_keys{"color", "ka", "kd", "ks
 
 constexpr std::array<std::string_view, 4> reflection_names{"lambert", "half-lambert", "phong",
                                                            "blinn-phong"};
-constexpr std::array<std::string_view, 3> shading_names{"flat", "gouraud", "phong"};
+constexpr std::array<std::string_view, 4> shading_names{"flat", "gouraud", "phong", "faceted"};
 constexpr std::array<std::string_view, 5> normals_names{"mean", "area", "angle", "max", "file"};
 
 const Family& light_family() {
