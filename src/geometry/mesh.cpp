@@ -11,6 +11,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -344,44 +345,58 @@ struct CornerWeights {
     std::vector<std::uint32_t> vertex_of_position;  // the welded vertex of each position
     std::vector<glm::vec3> weights;
     std::vector<bool> usable;  // per triangle
+    std::vector<glm::vec3> unit_normals;  // DD8 per triangle, when asked for
 };
 
 // The weighted normals of triangle (a, b, c) at its corners; false for a
 // triangle that takes no part (zero area, which includes a zero-length
 // edge, or non-finite).
 bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
-                      const glm::vec3& c, glm::vec3* out) {
+                      const glm::vec3& c, glm::vec3* out, glm::vec3& unit_normal) {
     if (weighting == Normals::Mean) {
         // DD9 exactly as before docs/spec.md §9.2: the DD8 normal, in float.
-        const glm::vec3 normal = face_normal(a, b, c);
-        out[0] = out[1] = out[2] = normal;
-        return normal != glm::vec3(0.0f);
+        unit_normal = face_normal(a, b, c);
+        out[0] = out[1] = out[2] = unit_normal;
+        return unit_normal != glm::vec3(0.0f);
     }
     const glm::dvec3 corners[3] = {glm::dvec3(a), glm::dvec3(b), glm::dvec3(c)};
     // (b − a) × (c − a): the same vector, e1 × e2, at every corner.
     const glm::dvec3 cross = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
     const double length = glm::length(cross);
     if (!(length > 0.0) || !std::isfinite(length)) {
-        out[0] = out[1] = out[2] = glm::vec3(0.0f);
+        out[0] = out[1] = out[2] = unit_normal = glm::vec3(0.0f);
         return false;
     }
-    for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 e1 = corners[(k + 1) % 3] - corners[k];
-        const glm::dvec3 e2 = corners[(k + 2) % 3] - corners[k];
-        switch (weighting) {
-            case Normals::Area: out[k] = glm::vec3(cross); break;
-            case Normals::Angle:
-                out[k] = glm::vec3(std::atan2(length, glm::dot(e1, e2)) / length * cross);
-                break;
-            default:  // Normals::Max (Max 1999)
-                out[k] = glm::vec3(cross / (glm::dot(e1, e1) * glm::dot(e2, e2)));
-                break;
+    const glm::dvec3 unit = cross / length;
+    unit_normal = glm::vec3(unit);  // face_normal(a, b, c), without computing it again
+    switch (weighting) {
+        case Normals::Area: out[0] = out[1] = out[2] = glm::vec3(cross); break;
+        case Normals::Angle: {
+            // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
+            // π minus those (a triangle's angles sum to π), one call fewer.
+            const double angle0 =
+                std::atan2(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
+            const double angle1 =
+                std::atan2(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
+            const double angle2 = std::max(0.0, std::numbers::pi - angle0 - angle1);
+            out[0] = glm::vec3(angle0 * unit);
+            out[1] = glm::vec3(angle1 * unit);
+            out[2] = glm::vec3(angle2 * unit);
+            break;
         }
+        default:  // Normals::Max (Max 1999)
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 e1 = corners[(k + 1) % 3] - corners[k];
+                const glm::dvec3 e2 = corners[(k + 2) % 3] - corners[k];
+                out[k] = glm::vec3(cross / (glm::dot(e1, e1) * glm::dot(e2, e2)));
+            }
+            break;
     }
     return true;
 }
 
-CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function) {
+CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function,
+                             bool with_unit_normals) {
     if (weighting == Normals::File) {
         throw std::invalid_argument(std::string(function) +
                                     ": \"file\" normals come from the mesh file, not from "
@@ -392,6 +407,7 @@ CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* fu
     result.vertex_of_position = weld(mesh.positions);
     result.weights.resize(mesh.triangles.size() * 3);
     result.usable.resize(mesh.triangles.size());
+    if (with_unit_normals) result.unit_normals.resize(mesh.triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& triangle = mesh.triangles[t];
         const std::uint32_t vertex_a = result.vertex_of_position[triangle[0]];
@@ -404,9 +420,11 @@ CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* fu
             out[0] = out[1] = out[2] = glm::vec3(0.0f);
             continue;
         }
+        glm::vec3 unit_normal;
         result.usable[t] = triangle_weights(weighting, mesh.positions[triangle[0]],
                                             mesh.positions[triangle[1]],
-                                            mesh.positions[triangle[2]], out);
+                                            mesh.positions[triangle[2]], out, unit_normal);
+        if (!result.unit_normals.empty()) result.unit_normals[t] = unit_normal;
     }
     return result;
 }
@@ -423,7 +441,7 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
 }
 
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting) {
-    const CornerWeights corners = corner_weights(mesh, weighting, "vertex_normals");
+    const CornerWeights corners = corner_weights(mesh, weighting, "vertex_normals", false);
     const std::size_t position_count = mesh.positions.size();
 
     // Summing the weighted normals and normalising gives the direction of
@@ -451,16 +469,10 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
                                     std::to_string(crease_angle_degrees) +
                                     " is outside (0, 180] degrees");
     }
-    const CornerWeights corners = corner_weights(mesh, weighting, "corner_normals");
+    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
     const std::size_t triangle_count = mesh.triangles.size();
 
-    std::vector<glm::vec3> unit_normals(triangle_count, glm::vec3(0.0f));
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        if (!corners.usable[t]) continue;
-        const auto& triangle = mesh.triangles[t];
-        unit_normals[t] = face_normal(mesh.positions[triangle[0]], mesh.positions[triangle[1]],
-                                      mesh.positions[triangle[2]]);
-    }
+    const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
 
     // The usable corners at each welded vertex, in triangle order (a
     // counting sort), so that a corner whose every neighbour counts sums the
@@ -486,24 +498,57 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
     }
 
     const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
-    std::vector<glm::vec3> normals(triangle_count * 3, glm::vec3(0.0f));
-    for (std::size_t f = 0; f < triangle_count; ++f) {
-        const glm::vec3& own = unit_normals[f];
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[f][k]];
-            glm::vec3 sum(0.0f);
-            for (std::uint32_t at = first_corner[vertex]; at < first_corner[vertex + 1]; ++at) {
+    // A shortcut that decides most vertices in one pass over their triangles:
+    // if every n̂_g at v lies within half the crease angle of one direction
+    // (the vertex normal), any two lie within the crease angle of each other,
+    // so nothing splits there. The margin keeps the shortcut to vertices
+    // where the pairwise test below, in float, would find no split either.
+    const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
+
+    // Each corner's weight is read only while its own vertex is worked on,
+    // so the weights become the corners' normals in place, vertex by vertex.
+    std::vector<glm::vec3> normals = std::move(corners.weights);
+    std::vector<glm::vec3> vertex_normal(mesh.positions.size(), glm::vec3(0.0f));
+    std::vector<glm::vec3> split;  // one vertex's corner normals, before they are written
+    for (std::size_t vertex = 0; vertex < mesh.positions.size(); ++vertex) {
+        const std::uint32_t begin = first_corner[vertex], end = first_corner[vertex + 1];
+        if (begin == end) continue;
+        // The sum in triangle order: exactly vertex_normals' sum.
+        glm::vec3 sum(0.0f);
+        for (std::uint32_t at = begin; at < end; ++at) sum += normals[corners_at_vertex[at]];
+        const glm::vec3 centre = normalized_or_zero(sum);
+        vertex_normal[vertex] = centre;
+        bool smooth = centre != glm::vec3(0.0f);
+        for (std::uint32_t at = begin; at < end && smooth; ++at) {
+            smooth = double(glm::dot(centre, unit_normals[corners_at_vertex[at] / 3])) > half_limit;
+        }
+        if (smooth) {
+            for (std::uint32_t at = begin; at < end; ++at) normals[corners_at_vertex[at]] = centre;
+            continue;
+        }
+        // docs/spec.md §9.2: corner f sums the triangles g with
+        // n̂_f·n̂_g > cos(crease angle), and always itself.
+        split.clear();
+        for (std::uint32_t own = begin; own < end; ++own) {
+            const std::uint32_t f = corners_at_vertex[own] / 3;
+            glm::vec3 part(0.0f);
+            for (std::uint32_t at = begin; at < end; ++at) {
                 const std::uint32_t corner = corners_at_vertex[at];
                 const std::uint32_t g = corner / 3;
-                // An unusable triangle (a sliver between welded corners)
-                // takes its corners' unsplit vertex normals.
-                if (!corners.usable[f] || g == f ||
-                    double(glm::dot(own, unit_normals[g])) > limit) {
-                    sum += corners.weights[corner];
-                }
+                if (g == f || double(glm::dot(unit_normals[f], unit_normals[g])) > limit)
+                    part += normals[corner];
             }
-            normals[3 * f + k] = normalized_or_zero(sum);
+            split.push_back(normalized_or_zero(part));
         }
+        for (std::uint32_t own = begin; own < end; ++own)
+            normals[corners_at_vertex[own]] = split[own - begin];
+    }
+    // An unusable triangle (a sliver between welded corners) takes its
+    // corners' unsplit vertex normals.
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (corners.usable[t]) continue;
+        for (int k = 0; k < 3; ++k)
+            normals[3 * t + k] = vertex_normal[corners.vertex_of_position[mesh.triangles[t][k]]];
     }
     return normals;
 }
