@@ -411,4 +411,9 @@ TEST_F(Cli, FileNormalsOnAMeshWithoutThemIsInvalidInputAtTheMeshLine) {
         EXPECT_NE(run.output.find("square.obj:7: error: "), std::string::npos) << run.output;
         EXPECT_FALSE(fs::exists(dir / "out.png"));
     }
+    // check finds it too, and the scene itself (mean normals) is fine.
+    const CliRun checked = run_cli("check scene.toml --normals file", dir);
+    EXPECT_EQ(checked.status, 2) << checked.output;
+    EXPECT_NE(checked.output.find("square.obj:7: error: "), std::string::npos) << checked.output;
+    EXPECT_EQ(run_cli("check scene.toml", dir).status, 0);
 }
