@@ -473,18 +473,62 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
     const std::size_t triangle_count = mesh.triangles.size();
 
     const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
+    const std::size_t position_count = mesh.positions.size();
 
-    // The usable corners at each welded vertex, in triangle order (a
-    // counting sort), so that a corner whose every neighbour counts sums the
-    // very terms of vertex_normals in the very same order.
-    std::vector<std::uint32_t> first_corner(mesh.positions.size() + 1, 0);
+    // Vertex normals, summed exactly as vertex_normals sums them.
+    std::vector<glm::vec3> vertex_normal(position_count, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (int k = 0; k < 3; ++k)
+            vertex_normal[corners.vertex_of_position[mesh.triangles[t][k]]] +=
+                corners.weights[3 * t + k];
+    }
+    for (glm::vec3& normal : vertex_normal) normal = normalized_or_zero(normal);
+
+    const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
+    // A shortcut that decides most vertices in one pass over the triangles:
+    // if every n̂_g at v lies within half the crease angle of one direction
+    // (the vertex normal), any two lie within the crease angle of each other,
+    // so nothing splits there and every corner at v has v's normal. The
+    // margin keeps the shortcut to vertices where the pairwise test below,
+    // in float, would find no split either.
+    const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
+    std::vector<std::uint8_t> pairwise(position_count, 0);
     for (std::size_t t = 0; t < triangle_count; ++t) {
         if (!corners.usable[t]) continue;
         for (const std::uint32_t position : mesh.triangles[t]) {
-            ++first_corner[corners.vertex_of_position[position] + 1];
+            const std::uint32_t vertex = corners.vertex_of_position[position];
+            const glm::vec3& centre = vertex_normal[vertex];
+            if (centre == glm::vec3(0.0f) ||
+                !(double(glm::dot(centre, unit_normals[t])) > half_limit))
+                pairwise[vertex] = 1;
+        }
+    }
+
+    // Each corner's weight is read only while its own vertex is worked on,
+    // so the weights become the corners' normals in place.
+    std::vector<glm::vec3> normals = std::move(corners.weights);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
+            // An unusable triangle (a sliver between welded corners) takes
+            // its corners' unsplit vertex normals.
+            if (!corners.usable[t] || !pairwise[vertex]) normals[3 * t + k] = vertex_normal[vertex];
+        }
+    }
+
+    // The other vertices' usable corners, in triangle order (a counting
+    // sort), and each corner's sum over the faces within the crease angle.
+    std::vector<std::uint32_t> first_corner(position_count + 1, 0);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (const std::uint32_t position : mesh.triangles[t]) {
+            const std::uint32_t vertex = corners.vertex_of_position[position];
+            if (pairwise[vertex]) ++first_corner[vertex + 1];
         }
     }
     std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
+    if (first_corner.back() == 0) return normals;
     std::vector<std::uint32_t> corners_at_vertex(first_corner.back());
     {
         std::vector<std::uint32_t> next(first_corner.begin(), first_corner.end() - 1);
@@ -492,40 +536,15 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
             if (!corners.usable[t]) continue;
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
-                corners_at_vertex[next[vertex]++] = static_cast<std::uint32_t>(3 * t + k);
+                if (pairwise[vertex])
+                    corners_at_vertex[next[vertex]++] = static_cast<std::uint32_t>(3 * t + k);
             }
         }
     }
-
-    const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
-    // A shortcut that decides most vertices in one pass over their triangles:
-    // if every n̂_g at v lies within half the crease angle of one direction
-    // (the vertex normal), any two lie within the crease angle of each other,
-    // so nothing splits there. The margin keeps the shortcut to vertices
-    // where the pairwise test below, in float, would find no split either.
-    const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
-
-    // Each corner's weight is read only while its own vertex is worked on,
-    // so the weights become the corners' normals in place, vertex by vertex.
-    std::vector<glm::vec3> normals = std::move(corners.weights);
-    std::vector<glm::vec3> vertex_normal(mesh.positions.size(), glm::vec3(0.0f));
     std::vector<glm::vec3> split;  // one vertex's corner normals, before they are written
-    for (std::size_t vertex = 0; vertex < mesh.positions.size(); ++vertex) {
+    for (std::size_t vertex = 0; vertex < position_count; ++vertex) {
         const std::uint32_t begin = first_corner[vertex], end = first_corner[vertex + 1];
         if (begin == end) continue;
-        // The sum in triangle order: exactly vertex_normals' sum.
-        glm::vec3 sum(0.0f);
-        for (std::uint32_t at = begin; at < end; ++at) sum += normals[corners_at_vertex[at]];
-        const glm::vec3 centre = normalized_or_zero(sum);
-        vertex_normal[vertex] = centre;
-        bool smooth = centre != glm::vec3(0.0f);
-        for (std::uint32_t at = begin; at < end && smooth; ++at) {
-            smooth = double(glm::dot(centre, unit_normals[corners_at_vertex[at] / 3])) > half_limit;
-        }
-        if (smooth) {
-            for (std::uint32_t at = begin; at < end; ++at) normals[corners_at_vertex[at]] = centre;
-            continue;
-        }
         // docs/spec.md §9.2: corner f sums the triangles g with
         // n̂_f·n̂_g > cos(crease angle), and always itself.
         split.clear();
@@ -542,13 +561,6 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
         }
         for (std::uint32_t own = begin; own < end; ++own)
             normals[corners_at_vertex[own]] = split[own - begin];
-    }
-    // An unusable triangle (a sliver between welded corners) takes its
-    // corners' unsplit vertex normals.
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        if (corners.usable[t]) continue;
-        for (int k = 0; k < 3; ++k)
-            normals[3 * t + k] = vertex_normal[corners.vertex_of_position[mesh.triangles[t][k]]];
     }
     return normals;
 }
