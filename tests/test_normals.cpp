@@ -403,6 +403,39 @@ TEST(NormalOptions, ObjectOverridesSceneAndSceneFileAppliesToMeshesOnly) {
     EXPECT_EQ(litkit::normal_options(scene, cube).crease_angle_degrees, 180.0f);
 }
 
+TEST(SceneFile, ReadsNormalsAndCreaseAngleInLightingAndPerObject) {
+    const litkit::Scene scene = litkit::parse_scene(R"([room]
+width = 10
+height = 10
+depth = 10
+[observer]
+position = [0, 0, 4]
+[lighting]
+shading = "faceted"
+normals = "angle"
+crease_angle = 30.5
+[[objects]]
+type = "cube"
+position = [-2, 0, 0]
+[[objects]]
+type = "sphere"
+position = [2, 0, 0]
+normals = "max"
+crease_angle = 180
+)",
+                                                    "normals.toml");
+    EXPECT_EQ(scene.shading, litkit::Shading::Faceted);
+    EXPECT_EQ(scene.normals, Normals::Angle);
+    EXPECT_EQ(scene.crease_angle_degrees, 30.5f);
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_FALSE(scene.objects[0].normals.has_value());
+    EXPECT_FALSE(scene.objects[0].crease_angle_degrees.has_value());
+    EXPECT_EQ(scene.objects[1].normals, Normals::Max);
+    EXPECT_EQ(scene.objects[1].crease_angle_degrees, 180.0f);
+    EXPECT_EQ(litkit::normal_options(scene, scene.objects[0]).normals, Normals::Angle);
+    EXPECT_EQ(litkit::normal_options(scene, scene.objects[1]).crease_angle_degrees, 180.0f);
+}
+
 litkit::Scene cube_scene(litkit::Shading shading) {
     litkit::Scene scene;
     scene.output.width = 160;
