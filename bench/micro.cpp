@@ -4,7 +4,9 @@
 // Timing only: nothing here passes or fails.
 #include <benchmark/benchmark.h>
 
+#include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "litkit/image.hpp"
@@ -121,8 +123,25 @@ void BM_StageRasterizeFlatFill1920x1080(benchmark::State& state) {
     frame(state, litkit::SphereShape{3.0f, 64, 32}, 1920, 1080, litkit::Shading::Flat);
 }
 
+// docs/spec.md §9.2: the world mesh of a 261k-triangle sphere (build, weld,
+// normals, transform) per way of computing normals, without and with a
+// crease; against mean without crease, the cost of each option.
+void BM_WorldMesh261kNormals(benchmark::State& state) {
+    litkit::SceneObject object;
+    object.shape = litkit::SphereShape{1.5f, 512, 256};
+    const litkit::NormalOptions options{
+        static_cast<litkit::Normals>(state.range(0)),
+        state.range(1) ? std::optional<float>(60.0f) : std::nullopt};
+    for (auto _ : state) benchmark::DoNotOptimize(litkit::world_mesh(object, options).normals.data());
+    state.SetLabel(std::string(litkit::to_string(options.normals)) +
+                   (state.range(1) ? ", crease 60" : ""));
+}
+
 }  // namespace
 
+BENCHMARK(BM_WorldMesh261kNormals)
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageSetup261kTriangles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageRasterizeFlatFill1920x1080)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EncodeDefaultScenePng)->Arg(0)->Arg(1)->Arg(3)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);

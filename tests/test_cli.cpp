@@ -380,3 +380,78 @@ TEST_F(Cli, BenchPrintsFrameTimesWithAMachineReadableLastLine) {
     EXPECT_NE(run.output.find(" fps=", last_line), std::string::npos) << run.output;
     EXPECT_FALSE(fs::exists(dir / "default.png")) << "bench renders into memory only";
 }
+
+// docs/spec.md §9.2 on the command line.
+const char* cube_and_mesh_scene = R"(
+[room]
+width = 10
+height = 10
+depth = 10
+
+[observer]
+position = [0, 1, 5]
+
+[output]
+width = 64
+height = 48
+
+[[lights]]
+type = "point"
+position = [0, 3, 3]
+intensity = 10
+
+[[objects]]
+type = "cube"
+position = [-1.2, 0, 0]
+rotation = [20, 30, 0]
+
+[[objects]]
+type = "mesh"
+file = "square.obj"
+position = [1.2, 0, 0]
+)";
+
+// Line 7 is the face whose third corner has no normal.
+const char* square_missing_a_normal =
+    "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nvn 0 0 1\n"
+    "f 1//1 2//1 3//1\nf 1//1 3//1 4\n";
+
+TEST_F(Cli, CreaseAngleOptionChangesThePicture) {
+    // A cube's pillowed normals become its faces' at 60° (its faces meet at 90°).
+    write("scene.toml", cube_and_mesh_scene);
+    write("square.obj", square_missing_a_normal);
+    ASSERT_EQ(run_cli("render scene.toml --yes -o smooth.png", dir).status, 0);
+    const CliRun creased = run_cli("render scene.toml --yes --crease-angle 60 -o sharp.png", dir);
+    ASSERT_EQ(creased.status, 0) << creased.output;
+    EXPECT_NE(litkit::read_png(dir / "smooth.png").rgb, litkit::read_png(dir / "sharp.png").rgb);
+}
+
+TEST_F(Cli, BadNormalsOptionValuesAreUsageErrors) {
+    EXPECT_EQ(run_cli("render --normals angel", dir).status, 2);
+    EXPECT_EQ(run_cli("render --crease-angle 0", dir).status, 2);
+    EXPECT_EQ(run_cli("render --crease-angle 181", dir).status, 2);
+    EXPECT_EQ(run_cli("render --crease-angle sixty", dir).status, 2);
+    EXPECT_EQ(run_cli("bench --crease-angle -5", dir).status, 2);
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+}
+
+TEST_F(Cli, FileNormalsOnAMeshWithoutThemIsInvalidInputAtTheMeshLine) {
+    // From the command line, "file" applies to the mesh only (the cube uses
+    // mean), and the mesh's face on line 7 lacks a normal.
+    write("scene.toml", cube_and_mesh_scene);
+    write("square.obj", square_missing_a_normal);
+    for (const char* backend : {"cpu", "gl"}) {
+        const CliRun run = run_cli(std::string("render scene.toml --yes --normals file --backend ") +
+                                       backend + " -o out.png",
+                                   dir);
+        if (run.output.find("OpenGL is not available") != std::string::npos) continue;
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_NE(run.output.find("square.obj:7: error: "), std::string::npos) << run.output;
+        EXPECT_FALSE(fs::exists(dir / "out.png"));
+    }
+    // check finds it too, and the scene itself (mean normals) is fine.
+    const CliRun checked = run_cli("check scene.toml --normals file", dir);
+    EXPECT_EQ(checked.status, 2) << checked.output;
+    EXPECT_NE(checked.output.find("square.obj:7: error: "), std::string::npos) << checked.output;
+    EXPECT_EQ(run_cli("check scene.toml", dir).status, 0);
+}

@@ -41,7 +41,8 @@ std::string read_text(const fs::path& path) {
     return text.str();
 }
 
-// Three objects, three different reflection × shading pairs (flat included),
+// Four objects, four different reflection × shading pairs (flat and faceted
+// included; the faceted one with angle-weighted normals, docs/spec.md §9.2),
 // every light kind, gamma 2.2 and a coloured background.
 constexpr const char* mixed_scene = R"toml(
 [room]
@@ -113,6 +114,18 @@ minor_radius = 0.2
 reflection = "phong"
 shading = "gouraud"
 material = { color = [230, 200, 90], ks = 0.8, shininess = 16 }
+
+[[objects]]
+name = "gem"
+type = "sphere"
+position = [2.4, -1.2, 0]
+radius = 0.5
+segments = 10
+rings = 6
+reflection = "phong"
+shading = "faceted"
+normals = "angle"
+material = { color = [120, 220, 140], ks = 0.7, shininess = 24 }
 )toml";
 
 // The models of docs/spec.md §9.1, one object each under every shading, and a
@@ -256,7 +269,7 @@ TEST_F(Export, GlslWritesOneProgramPerModelPairAndEachCompiles) {
     const Outcome exported = cli("export --format glsl mixed.toml -o shaders");
     ASSERT_EQ(exported.status, 0) << exported.output;
     const std::vector<std::string> stems = {"blinn-phong-phong", "half-lambert-flat",
-                                            "phong-gouraud"};
+                                            "phong-gouraud", "phong-faceted"};
     std::size_t files = 0;
     for (const auto& entry : fs::directory_iterator(dir / "shaders")) files += entry.is_regular_file();
     EXPECT_EQ(files, 2 * stems.size());

@@ -196,7 +196,7 @@ TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
     for (const litkit::ReflectionModel& model : litkit::reflection_models())
         reflections.push_back(model.id);
     const litkit::Shading shadings[] = {litkit::Shading::Flat, litkit::Shading::Gouraud,
-                                        litkit::Shading::Phong};
+                                        litkit::Shading::Phong, litkit::Shading::Faceted};
     const LightType lights[] = {LightType::Ambient, LightType::Directional, LightType::Point,
                                 LightType::Spot, LightType::SoftSpot};
     int cases = 0;
@@ -223,7 +223,7 @@ TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
             }
         }
     }
-    EXPECT_EQ(cases, 2 * litkit::reflection_count * 3 * 5);
+    EXPECT_EQ(cases, 2 * litkit::reflection_count * litkit::shading_count * 5);
     std::cout << "matrix: " << cases << " scenes, lowest fraction within 2/255 " << lowest
               << ", largest difference " << worst << "/255\n";
 }
@@ -293,4 +293,28 @@ TEST(GlBackend, DrawsSeveralFramesAlike) {
     gl.render_into(second);
     gl.render_into(second);
     EXPECT_EQ(first.rgb, second.rgb);
+}
+
+TEST(GlBackend, WeightedAndCreasedNormalsMatchCpu) {
+    // docs/spec.md §9.2 reaches OpenGL through the same world_mesh: a cube
+    // creased at 60° (flat faces) under Phong and Gouraud shading, and a
+    // sphere with angle-weighted normals.
+    for (const litkit::Shading shading : {litkit::Shading::Phong, litkit::Shading::Gouraud}) {
+        litkit::Scene scene = matrix_scene(Shape::Cube, LightType::Point,
+                                           litkit::Reflection::BlinnPhong, shading);
+        scene.objects[0].position = {-1.1f, 0.0f, 0.0f};
+        scene.objects[0].scale = 0.8f;
+        scene.objects[0].crease_angle_degrees = 60.0f;
+        litkit::SceneObject sphere = scene.objects[0];
+        sphere.shape = litkit::SphereShape{0.7f, 10, 6};
+        sphere.position = {1.1f, 0.0f, 0.0f};
+        sphere.crease_angle_degrees.reset();
+        sphere.normals = litkit::Normals::Angle;
+        scene.objects.push_back(sphere);
+        SCOPED_TRACE(std::string(litkit::to_string(shading)));
+        const Comparison c = compare_backends(scene);
+        EXPECT_GT(c.agreement.counted, c.pixels / 20);
+        EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst;
+        expect_edges_and_background_agree(c.agreement);
+    }
 }

@@ -4,8 +4,10 @@
 // The reference takes nothing from the library but the local triangles of the
 // objects (make_sphere, make_cube, make_torus for the built-in shapes, and
 // object_mesh for teapots and mesh files; meshes have their own tests). The
-// world transform (docs/spec.md §2), face and vertex normals (DD8, DD9),
-// camera rays (§1), shading models (§3) and lighting (§4) are all computed
+// world transform (docs/spec.md §2), face and vertex normals (DD8, DD9, and
+// §9.2: weightings, creases, a mesh file's normals),
+// camera rays (§1), shading models (§3, and §9.2's faceted: the face normal
+// at the hit point) and lighting (§4) are all computed
 // here, by hand, in double, for a whole scene: the nearest hit over all
 // objects, each with its own reflection and shading (or [lighting]'s).
 //
@@ -35,6 +37,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -377,12 +381,14 @@ struct RefObject {
     litkit::Reflection reflection = litkit::Reflection::Phong;
     RefMaterial material{};
     std::vector<dvec3> positions;       // world
-    std::vector<dvec3> vertex_normals;  // DD9, world
+    // Per triangle corner (3·t + k): DD9, or docs/spec.md §9.2's weightings,
+    // crease and file normals; world.
+    std::vector<dvec3> corner_normals;
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<dvec3> face_normals;   // DD8, world
     std::vector<std::uint32_t> front;  // triangles facing the eye
     std::vector<Lit> flat_colours;     // per triangle (flat shading)
-    std::vector<Lit> vertex_colours;   // per position (Gouraud shading)
+    std::vector<Lit> corner_colours;   // per triangle corner (Gouraud shading)
     dvec3 centre{0.0};
     double radius = 0.0;  // bounding sphere, for a quick miss
 };
@@ -419,21 +425,71 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
         ref.face_normals.push_back(normalize_or_zero(glm::cross(b - a, c - a)));
     }
 
-    // DD9: plain mean of the face normals around each welded vertex; a triangle
-    // with two corners welded together (or no area at all) takes no part.
-    const std::vector<std::size_t> group = weld_positions(mesh);
-    std::vector<dvec3> sums(ref.positions.size(), dvec3(0.0));
-    for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
-        const auto& t = ref.triangles[k];
-        const std::size_t g0 = group[t[0]], g1 = group[t[1]], g2 = group[t[2]];
-        if (g0 == g1 || g1 == g2 || g0 == g2) continue;
-        if (ref.face_normals[k] == dvec3(0.0)) continue;
-        sums[g0] += ref.face_normals[k];
-        sums[g1] += ref.face_normals[k];
-        sums[g2] += ref.face_normals[k];
+    // Which normals (docs/spec.md §9.2): the object's, else the scene's;
+    // "file" from the scene only on mesh objects; a crease of 180 is none.
+    const bool is_mesh = std::holds_alternative<litkit::MeshFileShape>(object.shape);
+    litkit::Normals normals = object.normals.value_or(scene.normals.value_or(litkit::Normals::Mean));
+    if (!object.normals && normals == litkit::Normals::File && !is_mesh)
+        normals = litkit::Normals::Mean;
+    std::optional<float> crease = object.crease_angle_degrees ? object.crease_angle_degrees
+                                                              : scene.crease_angle_degrees;
+    if (crease && *crease >= 180.0f) crease.reset();
+
+    if (normals == litkit::Normals::File) {
+        // The file's normals, turned as the object is (world = T·R·S, S uniform).
+        for (std::size_t k = 0; k < ref.triangles.size(); ++k)
+            for (int c = 0; c < 3; ++c) {
+                const glm::vec3 n = mesh.file_normals.at(mesh.triangle_file_normals[k][c]);
+                const glm::vec3 origin(0.0f);
+                ref.corner_normals.push_back(normalize_or_zero(local_to_world(object, n) -
+                                                               local_to_world(object, origin)));
+            }
+    } else {
+        // Each corner's weighted normal; a triangle with two corners welded
+        // together (or no area at all) takes no part.
+        const std::vector<std::size_t> group = weld_positions(mesh);
+        std::vector<dvec3> weight(3 * ref.triangles.size(), dvec3(0.0));
+        std::vector<bool> usable(ref.triangles.size(), false);
+        std::map<std::size_t, std::vector<std::size_t>> corners_of_group;  // → 3·t + c
+        for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
+            const auto& t = ref.triangles[k];
+            if (group[t[0]] == group[t[1]] || group[t[1]] == group[t[2]] ||
+                group[t[0]] == group[t[2]] || ref.face_normals[k] == dvec3(0.0))
+                continue;
+            usable[k] = true;
+            for (int c = 0; c < 3; ++c) {
+                const dvec3 e1 = ref.positions[t[(c + 1) % 3]] - ref.positions[t[c]];
+                const dvec3 e2 = ref.positions[t[(c + 2) % 3]] - ref.positions[t[c]];
+                const dvec3 cross = glm::cross(e1, e2);
+                dvec3& w = weight[3 * k + c];
+                switch (normals) {
+                    case litkit::Normals::Area: w = cross; break;
+                    case litkit::Normals::Angle:
+                        w = std::atan2(glm::length(cross), glm::dot(e1, e2)) * ref.face_normals[k];
+                        break;
+                    case litkit::Normals::Max:
+                        w = cross / (glm::dot(e1, e1) * glm::dot(e2, e2));
+                        break;
+                    default: w = ref.face_normals[k]; break;  // mean (DD9)
+                }
+                corners_of_group[group[t[c]]].push_back(3 * k + c);
+            }
+        }
+        const double limit = crease ? std::cos(double(*crease) * std::numbers::pi / 180.0) : -2.0;
+        for (std::size_t k = 0; k < ref.triangles.size(); ++k)
+            for (int c = 0; c < 3; ++c) {
+                dvec3 sum(0.0);
+                for (const std::size_t other : corners_of_group[group[ref.triangles[k][c]]]) {
+                    const std::size_t h = other / 3;
+                    // A crease counts only faces within its angle (and the
+                    // corner's own); an unusable triangle takes the vertex normal.
+                    if (!usable[k] || h == k ||
+                        glm::dot(ref.face_normals[k], ref.face_normals[h]) > limit)
+                        sum += weight[other];
+                }
+                ref.corner_normals.push_back(normalize_or_zero(sum));
+            }
     }
-    for (std::size_t i = 0; i < ref.positions.size(); ++i)
-        ref.vertex_normals.push_back(normalize_or_zero(sums[group[i]]));
 
     // Back faces are culled: keep triangles whose face normal points at the eye.
     for (std::size_t k = 0; k < ref.triangles.size(); ++k) {
@@ -451,9 +507,11 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
         ref.flat_colours.push_back(
             light_point(ref.reflection, ref.material, lights, centroid, ref.face_normals[k], eye));
     }
-    for (std::size_t i = 0; i < ref.positions.size(); ++i)
-        ref.vertex_colours.push_back(light_point(ref.reflection, ref.material, lights,
-                                                 ref.positions[i], ref.vertex_normals[i], eye));
+    for (std::size_t k = 0; k < ref.triangles.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            ref.corner_colours.push_back(light_point(ref.reflection, ref.material, lights,
+                                                     ref.positions[ref.triangles[k][c]],
+                                                     ref.corner_normals[3 * k + c], eye));
 
     for (const dvec3& p : ref.positions) ref.centre += p;
     if (!ref.positions.empty()) ref.centre /= double(ref.positions.size());
@@ -565,9 +623,10 @@ ReferenceImage reference_render(const litkit::Scene& scene) {
                     break;
                 case litkit::Shading::Gouraud: {
                     // Ray barycentrics are the perspective-correct ones.
-                    const Lit &c0 = object.vertex_colours[tri[0]],
-                              &c1 = object.vertex_colours[tri[1]],
-                              &c2 = object.vertex_colours[tri[2]];
+                    const std::size_t first = 3 * static_cast<std::size_t>(nearest.triangle);
+                    const Lit &c0 = object.corner_colours[first],
+                              &c1 = object.corner_colours[first + 1],
+                              &c2 = object.corner_colours[first + 2];
                     lit.intensity = w0 * c0.intensity + w1 * c1.intensity + w2 * c2.intensity;
                     lit.cone_margin = std::min({c0.cone_margin, c1.cone_margin, c2.cone_margin});
                     break;
@@ -575,10 +634,20 @@ ReferenceImage reference_render(const litkit::Scene& scene) {
                 case litkit::Shading::Phong: {
                     const dvec3 p = w0 * object.positions[tri[0]] + w1 * object.positions[tri[1]] +
                                     w2 * object.positions[tri[2]];
-                    const dvec3 normal = glm::normalize(w0 * object.vertex_normals[tri[0]] +
-                                                        w1 * object.vertex_normals[tri[1]] +
-                                                        w2 * object.vertex_normals[tri[2]]);
+                    const std::size_t first = 3 * static_cast<std::size_t>(nearest.triangle);
+                    const dvec3 normal = glm::normalize(w0 * object.corner_normals[first] +
+                                                        w1 * object.corner_normals[first + 1] +
+                                                        w2 * object.corner_normals[first + 2]);
                     lit = light_point(object.reflection, object.material, lights, p, normal, eye);
+                    break;
+                }
+                case litkit::Shading::Faceted: {
+                    // docs/spec.md §9.2: at the hit point, with the face normal
+                    // (the triangle hit faces the eye).
+                    const dvec3 p = w0 * object.positions[tri[0]] + w1 * object.positions[tri[1]] +
+                                    w2 * object.positions[tri[2]];
+                    lit = light_point(object.reflection, object.material, lights, p,
+                                      object.face_normals[nearest.triangle], eye);
                     break;
                 }
             }
@@ -620,8 +689,9 @@ bool is_comparable(const ReferenceImage& ref, int i, int j) {
             }
         }
     }
-    if (ref.object[centre] >= 0 && ref.shading[centre] == litkit::Shading::Flat &&
-        several_triangles) {
+    const bool per_face_normal = ref.shading[centre] == litkit::Shading::Flat ||
+                                 ref.shading[centre] == litkit::Shading::Faceted;
+    if (ref.object[centre] >= 0 && per_face_normal && several_triangles) {
         for (int c = 0; c < 3; ++c)
             if (high[c] - low[c] > 2) return false;  // edge between flat colours
     }
@@ -907,10 +977,12 @@ TEST(ReferenceRayCaster, CubeVertexNormalsArePillowedCorners) {
     box.shape = litkit::CubeShape{2.0f};
     const RefObject ref = prepare_object(scene, box, {}, dvec3(0.0, 0.0, 5.0));
     ASSERT_FALSE(ref.positions.empty());
-    for (std::size_t i = 0; i < ref.positions.size(); ++i) {
-        const dvec3 expected = glm::sign(ref.positions[i]) / std::sqrt(3.0);
-        EXPECT_NEAR(glm::length(ref.vertex_normals[i] - expected), 0.0, 1e-6) << "position " << i;
-    }
+    for (std::size_t k = 0; k < ref.triangles.size(); ++k)
+        for (int c = 0; c < 3; ++c) {
+            const dvec3 expected = glm::sign(ref.positions[ref.triangles[k][c]]) / std::sqrt(3.0);
+            EXPECT_NEAR(glm::length(ref.corner_normals[3 * k + c] - expected), 0.0, 1e-6)
+                << "triangle " << k << " corner " << c;
+        }
 }
 
 // ---- The renderer against the reference ----
@@ -923,7 +995,7 @@ constexpr std::array all_reflections{
     litkit::Reflection::Toon,         litkit::Reflection::Minnaert,    litkit::Reflection::Gooch};
 static_assert(all_reflections.size() == litkit::reflection_count);
 constexpr std::array all_shadings{litkit::Shading::Flat, litkit::Shading::Gouraud,
-                                  litkit::Shading::Phong};
+                                  litkit::Shading::Phong, litkit::Shading::Faceted};
 
 struct ModelCase {
     ShapeKind shape;

@@ -647,7 +647,7 @@ reflection = "blinn"
     EXPECT_EQ(diagnostics[1].location.column, 11u);
     EXPECT_EQ(diagnostics[1].message,
               "lighting: shading \"gourad\" is not a shading model (one of flat, gouraud, "
-              "phong); did you mean 'gouraud'?");
+              "phong, faceted); did you mean 'gouraud'?");
     EXPECT_EQ(diagnostics[2].location.line, 12u);
     EXPECT_EQ(diagnostics[2].location.column, 14u);
     EXPECT_NE(diagnostics[2].message.find("did you mean 'blinn-phong'?"), std::string::npos)

@@ -55,7 +55,7 @@ litkit::Image crop(const litkit::Image& image, int left, int top, int w, int h) 
     return out;
 }
 
-const char* const shadings[] = {"flat", "gouraud", "phong"};
+const char* const shadings[] = {"flat", "gouraud", "phong", "faceted"};
 const char* const reflections[] = {"lambert",     "half-lambert", "phong",
                                    "blinn-phong", "oren-nayar",   "cook-torrance",
                                    "toon",        "minnaert",     "gooch"};
@@ -66,10 +66,10 @@ TEST_F(Teach, CompareWithoutLabelsIsExactlyTheRenderOfEachPair) {
     const auto made = cli("compare --no-labels --width 80 --height 60 -o grid.png");
     ASSERT_EQ(made.status, 0) << made.output;
     const litkit::Image grid = png("grid.png");
-    ASSERT_EQ(grid.width, 3 * 80);
+    ASSERT_EQ(grid.width, 4 * 80);
     ASSERT_EQ(grid.height, 9 * 60);
     for (int row = 0; row < 9; ++row) {
-        for (int column = 0; column < 3; ++column) {
+        for (int column = 0; column < 4; ++column) {
             const std::string name = std::to_string(row) + "-" + std::to_string(column) + ".png";
             const auto rendered =
                 cli(std::string("render --reflection ") + reflections[row] + " --shading " +
@@ -87,7 +87,7 @@ TEST_F(Teach, CompareDefaultTilesAreTheScenesSizeHalved) {
     const litkit::CompareGrid grid = litkit::compare_models(litkit::default_scene(), options);
     EXPECT_EQ(grid.tile_width, 400);
     EXPECT_EQ(grid.tile_height, 300);
-    EXPECT_EQ(grid.image.width, 3 * 400);
+    EXPECT_EQ(grid.image.width, litkit::shading_count * 400);
     EXPECT_EQ(grid.image.height, litkit::reflection_count * 300);
     EXPECT_EQ(grid.rows.size(), static_cast<std::size_t>(litkit::reflection_count));
 }
@@ -103,10 +103,10 @@ TEST_F(Teach, LabelsSitInAMarginAndLeaveTheTilesAlone) {
     const litkit::CompareGrid labelled = litkit::compare_models(scene, options);
     ASSERT_GT(labelled.left_margin, 0);
     ASSERT_GT(labelled.top_margin, 0);
-    EXPECT_EQ(labelled.image.width, labelled.left_margin + 3 * 120);
+    EXPECT_EQ(labelled.image.width, labelled.left_margin + litkit::shading_count * 120);
     EXPECT_EQ(labelled.image.height, labelled.top_margin + litkit::reflection_count * 90);
     // The tiles are untouched by the labels.
-    EXPECT_EQ(crop(labelled.image, labelled.left_margin, labelled.top_margin, 3 * 120,
+    EXPECT_EQ(crop(labelled.image, labelled.left_margin, labelled.top_margin, litkit::shading_count * 120,
                    litkit::reflection_count * 90)
                   .rgb,
               bare.image.rgb);
@@ -119,7 +119,7 @@ TEST_F(Teach, LabelsSitInAMarginAndLeaveTheTilesAlone) {
     };
     for (int row = 0; row < litkit::reflection_count; ++row)
         EXPECT_TRUE(has_text(0, labelled.top_margin + row * 90, labelled.left_margin, 90)) << row;
-    for (int column = 0; column < 3; ++column)
+    for (int column = 0; column < litkit::shading_count; ++column)
         EXPECT_TRUE(has_text(labelled.left_margin + column * 120, 0, 120, labelled.top_margin))
             << column;
     // The corner above the row labels stays empty.
@@ -398,8 +398,8 @@ void expect_every_pixel_explained(const litkit::Scene& scene, const std::string&
 }  // namespace
 
 TEST(Explain, EveryPixelOfEveryModelPairAndLightKind) {
-    for (litkit::Shading shading :
-         {litkit::Shading::Flat, litkit::Shading::Gouraud, litkit::Shading::Phong}) {
+    for (litkit::Shading shading : {litkit::Shading::Flat, litkit::Shading::Gouraud,
+                                    litkit::Shading::Phong, litkit::Shading::Faceted}) {
         for (float gamma : {1.0f, 2.2f}) {
             const std::string label =
                 std::string(litkit::to_string(shading)) + " gamma " + std::to_string(gamma);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -28,6 +29,7 @@
 #include "litkit/turntable.hpp"
 #include "usage.hpp"
 #include "viewer/viewer.hpp"
+#include "litkit/validate.hpp"
 
 namespace {
 
@@ -44,6 +46,8 @@ struct SceneArguments {
     std::optional<int> height;
     std::optional<std::string> reflection;
     std::optional<std::string> shading;
+    std::optional<std::string> normals;
+    std::optional<float> crease_angle;
     std::optional<int> threads;  // CPU backend only; none: one per core
     std::string backend = "cpu";
 };
@@ -101,6 +105,25 @@ struct BenchArguments {
     int frames = 20;
 };
 
+// docs/spec.md §9.2's options, shared by every command that loads a scene.
+void add_normals_options(CLI::App* command, SceneArguments& arguments) {
+    command->add_option("--normals", arguments.normals, "How vertex normals weight faces")
+        ->check(CLI::IsMember({"mean", "area", "angle", "max", "file"}));
+    command
+        ->add_option("--crease-angle", arguments.crease_angle,
+                     "Split normals between faces more than this many degrees apart")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                // docs/spec.md §9.2: (0, 180]. Runs before CLI11 converts the text.
+                char* end = nullptr;
+                const float degrees = std::strtof(text.c_str(), &end);
+                return end != text.c_str() && *end == '\0' && degrees > 0.0f && degrees <= 180.0f
+                           ? std::string()
+                           : "crease angle " + text + " is not in (0, 180] degrees";
+            },
+            "DEGREES in (0, 180]"));
+}
+
 // `rendering`: also the options that choose and tune a renderer.
 void add_scene_options(CLI::App* command, SceneArguments& arguments, bool rendering = true) {
     command->add_option("SCENE", arguments.scenes,
@@ -115,7 +138,8 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("--reflection", arguments.reflection, "Reflection model")
         ->check(CLI::IsMember(reflections));
     command->add_option("--shading", arguments.shading, "Shading model")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+        ->check(CLI::IsMember({"flat", "gouraud", "phong", "faceted"}));
+    add_normals_options(command, arguments);
     if (!rendering) return;
     command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, 1024));
@@ -237,6 +261,17 @@ litkit::Scene load(const SceneArguments& arguments) {
     if (arguments.height) scene.output.height = *arguments.height;
     if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
     if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
+    if (arguments.normals) scene.normals = litkit::parse_normals(*arguments.normals);
+    if (arguments.crease_angle) scene.crease_angle_degrees = *arguments.crease_angle;
+    if (arguments.normals || arguments.crease_angle) {
+        // docs/spec.md §9.2: `--normals file` asks every mesh file for a
+        // normal at each face corner; validating again reports one that
+        // lacks it at its line, before any rendering (warnings were shown).
+        std::vector<litkit::Diagnostic> errors;
+        for (litkit::Diagnostic& diagnostic : litkit::validate_scene(scene))
+            if (diagnostic.severity == litkit::Severity::Error) errors.push_back(std::move(diagnostic));
+        if (!errors.empty()) throw litkit::SceneError(std::move(errors));
+    }
     return scene;
 }
 
@@ -268,8 +303,8 @@ int run_render(const RenderArguments& arguments) {
     return exit_success;
 }
 
-int run_check(const std::vector<std::string>& scenes) {
-    load(scenes);
+int run_check(const SceneArguments& arguments) {
+    load(arguments);
     std::cout << "ok\n";
     return exit_success;
 }
@@ -579,9 +614,11 @@ int main(int argc, char** argv) {
     render->add_flag("-y,--yes", render_arguments.yes,
                      "Use the default models (phong / phong) where [lighting] leaves one out");
 
-    std::vector<std::string> check_scenes;
+    SceneArguments check_arguments;
     CLI::App* check = app.add_subcommand("check", "Validate scene files without rendering");
-    check->add_option("SCENE", check_scenes, "Scene files (TOML), merged in order")->required();
+    check->add_option("SCENE", check_arguments.scenes, "Scene files (TOML), merged in order")
+        ->required();
+    add_normals_options(check, check_arguments);
 
     std::string init_file;
     bool init_force = false;
@@ -691,7 +728,7 @@ int main(int argc, char** argv) {
 
     try {
         if (render->parsed()) return run_render(render_arguments);
-        if (check->parsed()) return run_check(check_scenes);
+        if (check->parsed()) return run_check(check_arguments);
         if (init->parsed()) return run_init(init_file, init_force);
         if (bench->parsed()) return run_bench(bench_arguments);
         if (export_command->parsed()) return run_export(export_arguments);

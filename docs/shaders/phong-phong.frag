@@ -10,7 +10,8 @@
 // The program's interface (both stages):
 //   vertex inputs, world space:
 //     location 0  vec3 a_position
-//     location 1  vec3 a_normal     flat: the face normal (DD8), else the vertex normal (DD9)
+//     location 1  vec3 a_normal     flat: the face normal (DD8), else the vertex normal (DD9;
+//                                   faceted does not use it)
 //     location 2  vec3 a_centroid   flat only: the triangle's centroid, the same at its 3 vertices
 //   uniforms:
 //     mat4 u_view_projection        world -> clip

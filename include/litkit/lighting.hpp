@@ -43,14 +43,14 @@ struct ReflectionModel {
 };
 // Every model, in the order of the enumeration.
 std::span<const ReflectionModel> reflection_models();
-// docs/spec.md §3, DD8–DD10.
-enum class Shading { Flat, Gouraud, Phong };
-inline constexpr int shading_count = static_cast<int>(Shading::Phong) + 1;
+// docs/spec.md §3, DD8–DD10, and §9.2's faceted: lit per pixel with the face normal.
+enum class Shading { Flat, Gouraud, Phong, Faceted };
+inline constexpr int shading_count = static_cast<int>(Shading::Faceted) + 1;
 
 // Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
 // "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
 std::string_view to_string(Reflection reflection);
-// Scene-file spelling: "flat", "gouraud", "phong".
+// Scene-file spelling: "flat", "gouraud", "phong", "faceted".
 std::string_view to_string(Shading shading);
 std::optional<Reflection> parse_reflection(std::string_view text);
 std::optional<Shading> parse_shading(std::string_view text);

@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace litkit {
@@ -15,7 +17,25 @@ namespace litkit {
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<std::array<std::uint32_t, 3>> triangles;
+
+    // The normals a mesh file gives (OBJ `vn`), for normals = "file"
+    // (docs/spec.md §9.2); empty for built-in shapes. For each triangle, the
+    // index into file_normals of each corner's normal (missing_file_normal
+    // where the face gave none) and the number of the file's face (0-based,
+    // in file order) that it came from.
+    std::vector<glm::vec3> file_normals;
+    std::vector<std::array<std::uint32_t, 3>> triangle_file_normals;
+    std::vector<std::uint32_t> triangle_faces;
 };
+inline constexpr std::uint32_t missing_file_normal = 0xffffffffu;
+
+// docs/spec.md §9.2: how a vertex normal weights the faces that share the
+// vertex, or the mesh file's own normals.
+enum class Normals { Mean, Area, Angle, Max, File };
+inline constexpr int normals_count = static_cast<int>(Normals::File) + 1;
+// Scene-file spelling: "mean", "area", "angle", "max", "file".
+std::string_view to_string(Normals normals);
+std::optional<Normals> parse_normals(std::string_view text);
 
 // DD8: normalize((b − a) × (c − a)); the zero vector for a zero-area triangle.
 glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
@@ -28,6 +48,25 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 // usable triangle gets the zero vector. O(n log n); throws ArgumentError
 // for a triangle index beyond the positions.
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
+
+// docs/spec.md §9.2: vertex normals with each usable triangle f at vertex v
+// weighted as `weighting` says (e1, e2: f's edges leaving v in winding
+// order, n̂_f its DD8 normal): Mean n̂_f (exactly vertex_normals(mesh)),
+// Area e1 × e2, Angle θ_f·n̂_f with θ_f = atan2(‖e1 × e2‖, e1·e2), Max
+// (e1 × e2)/(‖e1‖²·‖e2‖²). Welding and zero-area rules as vertex_normals;
+// a triangle with a zero-length edge takes no part. File is not a
+// weighting: it throws std::invalid_argument.
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting);
+
+// docs/spec.md §9.2 crease: the normal of each triangle corner (entry
+// 3·t + k for corner k of triangle t), summing with `weighting` only the
+// triangles g at the corner's vertex whose unit normals satisfy
+// n̂_f·n̂_g > cos(crease_angle_degrees), f itself always. A corner whose
+// every neighbour counts gets exactly its vertex normal. Unusable triangles
+// get the zero vector. Throws std::invalid_argument for File or an angle
+// outside (0, 180].
+std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
+                                      float crease_angle_degrees);
 
 // Axis-aligned bounding box of the positions (both zero for an empty mesh).
 struct Bounds {

@@ -87,6 +87,9 @@ struct SceneObject {
     Material material;
     std::optional<Reflection> reflection;  // overrides Scene::reflection
     std::optional<Shading> shading;        // overrides Scene::shading
+    // docs/spec.md §9.2; each overrides its Scene:: namesake.
+    std::optional<Normals> normals;
+    std::optional<float> crease_angle_degrees;
 };
 
 struct Scene {
@@ -97,6 +100,9 @@ struct Scene {
     // whether the defaults apply).
     std::optional<Reflection> reflection;
     std::optional<Shading> shading;
+    // docs/spec.md §9.2, for every object; not given means mean and no crease.
+    std::optional<Normals> normals;
+    std::optional<float> crease_angle_degrees;
     std::vector<SceneLight> lights;
     std::vector<SceneObject> objects;
 
@@ -157,5 +163,23 @@ struct WorldMesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 WorldMesh world_mesh(const SceneObject& object);
+
+// How an object's vertex normals are found (docs/spec.md §9.2).
+struct NormalOptions {
+    Normals normals = Normals::Mean;
+    std::optional<float> crease_angle_degrees;  // absent or 180: nothing splits
+    bool operator==(const NormalOptions&) const = default;
+};
+
+// The object's own `normals` and `crease_angle`, else the scene's; "file"
+// from the scene applies to mesh objects only, the others use mean.
+NormalOptions normal_options(const Scene& scene, const SceneObject& object);
+
+// world_mesh with the normals of docs/spec.md §9.2. Where normals differ per
+// corner (a crease, or a mesh file's normals), a position appears once per
+// distinct normal at it, so every backend gets per-corner normals as plain
+// vertices. Throws SceneError, located at the face's line in the mesh file,
+// for "file" normals on a mesh that lacks a normal at some face corner.
+WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options);
 
 }  // namespace litkit

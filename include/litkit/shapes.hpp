@@ -5,6 +5,8 @@
 // subdivisions below 1, a torus's minor radius not below its major radius).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 
 #include "litkit/mesh.hpp"
@@ -33,6 +35,14 @@ Mesh make_teapot(float size, int subdivisions);
 // becomes the fan (v0, vi, vi+1). Throws IoError if the file cannot be read
 // or parsed, has no faces, or a face refers to a vertex it does not define,
 // with the line where parsing stopped when known.
+// Also keeps the file's `vn` normals (Mesh::file_normals) for docs/spec.md
+// §9.2; a corner without one, or with an index beyond them, has
+// missing_file_normal.
 Mesh load_obj(const std::filesystem::path& path);
+
+// The line of an OBJ file's `face_number`-th face (0-based, in file order,
+// as Mesh::triangle_faces numbers them), or 0 if the file cannot be read
+// again. For placing errors.
+std::uint32_t line_of_face(const std::filesystem::path& path, std::size_t face_number);
 
 }  // namespace litkit

@@ -215,7 +215,8 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
-        const detail::GlObject gl = detail::gl_object(object, pair.first, pair.second);
+        const detail::GlObject gl = detail::gl_object(object, pair.first, pair.second,
+                                                      normal_options(scene, object));
         const std::string id = "object" + std::to_string(i);
         const std::string label = (object.name.empty() ? std::string(shape_type_name(object.shape))
                                                        : printable(object.name));

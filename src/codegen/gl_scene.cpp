@@ -4,8 +4,9 @@
 
 namespace litkit::detail {
 
-GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading) {
-    WorldMesh mesh = world_mesh(object);
+GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
+                   const NormalOptions& normals) {
+    WorldMesh mesh = world_mesh(object, normals);
     GlObject gl;
     gl.triangles = mesh.triangles.size();
     gl.material = object.material;
@@ -28,6 +29,8 @@ GlObject gl_object(const SceneObject& object, Reflection reflection, Shading sha
             }
         }
     } else {
+        // Gouraud, Phong and faceted (whose shaders find the face normal
+        // themselves and leave a_normal unused) share this layout.
         gl.vertices.reserve(mesh.positions.size() * 6);
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
             put(mesh.positions[i]);

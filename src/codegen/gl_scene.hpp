@@ -14,7 +14,7 @@ namespace litkit::detail {
 
 struct GlObject {
     // Flat: 9 floats per vertex (position, face normal, centroid), three
-    // unshared vertices per triangle, no indices. Gouraud, Phong: 6 floats per
+    // unshared vertices per triangle, no indices. Gouraud, Phong, faceted: 6 floats per
     // vertex (position, vertex normal) and three indices per triangle.
     std::vector<float> vertices;
     std::vector<std::uint32_t> indices;
@@ -25,7 +25,9 @@ struct GlObject {
 };
 
 // Throws IoError for an unreadable mesh file.
-GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading);
+// `normals`: how its vertex normals are found (normal_options, docs/spec.md §9.2).
+GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
+                   const NormalOptions& normals);
 
 std::vector<equations::PreparedLight> prepared_lights(const Scene& scene);
 

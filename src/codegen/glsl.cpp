@@ -235,7 +235,8 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "//   vertex inputs, world space:\n"
            "//     location 0  vec3 a_position\n"
            "//     location 1  vec3 a_normal     flat: the face normal (DD8), else the vertex "
-           "normal (DD9)\n"
+           "normal (DD9;\n"
+           "//                                   faceted does not use it)\n"
            "//     location 2  vec3 a_centroid   flat only: the triangle's centroid, the same at "
            "its 3 vertices\n"
            "//   uniforms:\n"
@@ -491,6 +492,39 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "void main() {\n"
                 "    vec3 normal = unit_vector(v_normal);\n"
                 "    vec3 to_eye = unit_vector(u_eye - v_position);\n"
+                "    frag_color = vec4(to_pixel(shade(v_position, normal, to_eye)), 1.0);\n"
+                "}\n";
+            break;
+        case Shading::Faceted:
+            vertex +=
+                "\n"
+                "// Faceted shading: the world position, interpolated perspective-correctly\n"
+                "// (smooth); lit per fragment.\n"
+                "out vec3 v_position;\n"
+                "\n"
+                "void main() {\n"
+                "    v_position = a_position;\n"
+                "    gl_Position = u_view_projection * vec4(a_position, 1.0);\n"
+                "}\n";
+            fragment +=
+                "\n"
+                "// World position, interpolated perspective-correctly.\n"
+                "in vec3 v_position;\n"
+                "\n"
+                "out vec4 frag_color;\n";
+            fragment += lighting_declarations(reflection, light_capacity);
+            fragment += to_pixel_function;
+            fragment +=
+                "\n"
+                "// Faceted shading (docs/spec.md §9.2): lit at the interpolated position with\n"
+                "// the face normal, from the position's screen-space derivatives. Across a\n"
+                "// triangle the position moves in its plane, so dFdx(p) x dFdy(p) is\n"
+                "// perpendicular to it; turned towards the eye, it is the front face's DD8\n"
+                "// normal (back faces are culled), whichever way the window's y axis runs.\n"
+                "void main() {\n"
+                "    vec3 to_eye = unit_vector(u_eye - v_position);\n"
+                "    vec3 normal = unit_vector(cross(dFdx(v_position), dFdy(v_position)));\n"
+                "    if (dot(normal, to_eye) < 0.0) normal = -normal;\n"
                 "    frag_color = vec4(to_pixel(shade(v_position, normal, to_eye)), 1.0);\n"
                 "}\n";
             break;

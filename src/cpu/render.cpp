@@ -7,7 +7,8 @@
 //   rasterize half-space edge functions with the top-left fill rule, over
 //             bands of rows spread across the thread pool
 //   fragment  depth test, perspective-correct varyings, lighting per pixel
-//             (Phong) or interpolated colours (Gouraud) or one colour (flat)
+//             (Phong; faceted, with the face normal) or interpolated colours
+//             (Gouraud) or one colour (flat)
 #include "litkit/render.hpp"
 #include "litkit/error.hpp"
 
@@ -226,6 +227,9 @@ inline void interpolate_surface(const PreparedObject& object, const RasterTriang
         p = {mix(0), mix(1), mix(2)};
         n = {mix(3), mix(4), mix(5)};
     }
+    // docs/spec.md §9.2 faceted: the same per-pixel lighting, with the
+    // triangle's DD8 normal (front-facing: back faces are culled).
+    if (object.shading == Shading::Faceted) n = object.face_normals[tri.source];
 }
 
 }  // namespace
@@ -269,7 +273,7 @@ void Renderer::Impl::prepare() {
     objects.clear();
     chunks.clear();
     for (const SceneObject& object : scene.objects) {
-        WorldMesh mesh = world_mesh(object);
+        WorldMesh mesh = world_mesh(object, normal_options(scene, object));
         PreparedObject prepared;
         prepared.positions = std::move(mesh.positions);
         prepared.normals = std::move(mesh.normals);
@@ -336,7 +340,8 @@ void Renderer::Impl::vertex_stage(int width, int height) {
 void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
     const PreparedObject& object = objects[chunk.object];
     const std::vector<glm::vec4>& clip = clip_positions[chunk.object];
-    const int varying_count = object.shading == Shading::Phong     ? 6
+    const bool per_pixel = object.shading == Shading::Phong || object.shading == Shading::Faceted;
+    const int varying_count = per_pixel                            ? 6
                               : object.shading == Shading::Gouraud ? 3
                                                                    : 0;
     const float half_width = 0.5f * static_cast<float>(width);
@@ -431,7 +436,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
             const std::uint32_t v = indices[k];
             input[k].clip = corners[k];
             input[k].varyings.fill(0.0f);
-            if (object.shading == Shading::Phong) {
+            if (per_pixel) {
                 const glm::vec3& p = object.positions[v];
                 const glm::vec3& n = object.normals[v];
                 input[k].varyings = {p.x, p.y, p.z, n.x, n.y, n.z};
@@ -563,7 +568,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
 }
 
 // Fragment stage for one row of the visibility buffer: each visible pixel
-// gets the shading model of its object, Phong pixels in runs through the
+// gets the shading model of its object, Phong and faceted pixels in runs through the
 // SIMD kernel; then clamp and gamma, and the background where nothing is.
 void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) const {
     const std::size_t w = static_cast<std::size_t>(width);
@@ -576,7 +581,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     const float eye[3] = {scene.observer.position.x, scene.observer.position.y,
                           scene.observer.position.z};
 
-    // A run: consecutive Phong pixels of one object, shaded together.
+    // A run: consecutive Phong or faceted pixels of one object, shaded together.
     std::size_t run_length = 0;
     const PreparedObject* run_object = nullptr;
     auto flush = [&] {
@@ -713,7 +718,9 @@ void Renderer::update(const Scene& scene) {
     Impl& impl = *impl_;
     bool same = scene.objects.size() == impl.scene.objects.size();
     for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
-        same = same_geometry(scene.objects[o], impl.scene.objects[o]);
+        same = same_geometry(scene.objects[o], impl.scene.objects[o]) &&
+               normal_options(scene, scene.objects[o]) ==
+                   normal_options(impl.scene, impl.scene.objects[o]);
     impl.scene = scene;
     if (same) {
         impl.prepare_surfaces();

@@ -9,11 +9,15 @@
 #include <cstdint>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <numbers>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -317,48 +321,268 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     return glm::vec3(cross / length);
 }
 
-std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
+namespace {
+
+void check_triangle_indices(const Mesh& mesh, const char* function) {
     const std::size_t position_count = mesh.positions.size();
     if (position_count > std::numeric_limits<std::uint32_t>::max()) {
-        throw std::length_error("vertex_normals: more positions than 32-bit indices can reach");
+        throw std::length_error(std::string(function) +
+                                ": more positions than 32-bit indices can reach");
     }
     for (const auto& triangle : mesh.triangles) {
         for (const std::uint32_t corner : triangle) {
             if (corner >= position_count) {
-                throw ArgumentError("vertex_normals: triangle index " + std::to_string(corner) +
-                                        " out of range (" + std::to_string(position_count) +
-                                        " positions)");
+                throw ArgumentError(std::string(function) + ": triangle index " +
+                                        std::to_string(corner) + " out of range (" +
+                                        std::to_string(position_count) + " positions)");
             }
         }
     }
+}
 
-    const std::vector<std::uint32_t> vertex_of_position = weld(mesh.positions);
+// Each triangle's part in the normal of each of its corners (entry 3·t + k),
+// with the weights of docs/spec.md §9.2, and whether it takes part at all.
+struct CornerWeights {
+    std::vector<std::uint32_t> vertex_of_position;  // the welded vertex of each position
+    std::vector<glm::vec3> weights;
+    std::vector<bool> usable;  // per triangle
+    std::vector<glm::vec3> unit_normals;  // DD8 per triangle, when asked for
+};
 
-    // Summing unit normals and normalising gives the direction of their plain
-    // mean (DD9), whatever the count.
-    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
-    for (const auto& triangle : mesh.triangles) {
-        const std::uint32_t vertex_a = vertex_of_position[triangle[0]];
-        const std::uint32_t vertex_b = vertex_of_position[triangle[1]];
-        const std::uint32_t vertex_c = vertex_of_position[triangle[2]];
+// The weighted normals of triangle (a, b, c) at its corners; false for a
+// triangle that takes no part (zero area, which includes a zero-length
+// edge, or non-finite).
+bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
+                      const glm::vec3& c, glm::vec3* out, glm::vec3& unit_normal) {
+    if (weighting == Normals::Mean) {
+        // DD9 exactly as before docs/spec.md §9.2: the DD8 normal, in float.
+        unit_normal = face_normal(a, b, c);
+        out[0] = out[1] = out[2] = unit_normal;
+        return unit_normal != glm::vec3(0.0f);
+    }
+    const glm::dvec3 corners[3] = {glm::dvec3(a), glm::dvec3(b), glm::dvec3(c)};
+    // (b − a) × (c − a): the same vector, e1 × e2, at every corner.
+    const glm::dvec3 cross = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
+    const double length = glm::length(cross);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        out[0] = out[1] = out[2] = unit_normal = glm::vec3(0.0f);
+        return false;
+    }
+    const glm::dvec3 unit = cross / length;
+    unit_normal = glm::vec3(unit);  // face_normal(a, b, c), without computing it again
+    switch (weighting) {
+        case Normals::Area: out[0] = out[1] = out[2] = glm::vec3(cross); break;
+        case Normals::Angle: {
+            // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
+            // π minus those (a triangle's angles sum to π), one call fewer.
+            const double angle0 =
+                std::atan2(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
+            const double angle1 =
+                std::atan2(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
+            const double angle2 = std::max(0.0, std::numbers::pi - angle0 - angle1);
+            out[0] = glm::vec3(angle0 * unit);
+            out[1] = glm::vec3(angle1 * unit);
+            out[2] = glm::vec3(angle2 * unit);
+            break;
+        }
+        default:  // Normals::Max (Max 1999)
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 e1 = corners[(k + 1) % 3] - corners[k];
+                const glm::dvec3 e2 = corners[(k + 2) % 3] - corners[k];
+                out[k] = glm::vec3(cross / (glm::dot(e1, e1) * glm::dot(e2, e2)));
+            }
+            break;
+    }
+    return true;
+}
+
+CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function,
+                             bool with_unit_normals) {
+    if (weighting == Normals::File) {
+        throw std::invalid_argument(std::string(function) +
+                                    ": \"file\" normals come from the mesh file, not from "
+                                    "weighting faces");
+    }
+    check_triangle_indices(mesh, function);
+    CornerWeights result;
+    result.vertex_of_position = weld(mesh.positions);
+    result.weights.resize(mesh.triangles.size() * 3);
+    result.usable.resize(mesh.triangles.size());
+    if (with_unit_normals) result.unit_normals.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& triangle = mesh.triangles[t];
+        const std::uint32_t vertex_a = result.vertex_of_position[triangle[0]];
+        const std::uint32_t vertex_b = result.vertex_of_position[triangle[1]];
+        const std::uint32_t vertex_c = result.vertex_of_position[triangle[2]];
+        glm::vec3* out = &result.weights[3 * t];
         // Two corners welded into one vertex make the triangle zero-area in
         // the welded mesh, whatever its tiny area before welding.
-        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) continue;
+        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) {
+            out[0] = out[1] = out[2] = glm::vec3(0.0f);
+            continue;
+        }
+        glm::vec3 unit_normal;
+        result.usable[t] = triangle_weights(weighting, mesh.positions[triangle[0]],
+                                            mesh.positions[triangle[1]],
+                                            mesh.positions[triangle[2]], out, unit_normal);
+        if (!result.unit_normals.empty()) result.unit_normals[t] = unit_normal;
+    }
+    return result;
+}
 
-        const glm::vec3 normal = face_normal(
-            mesh.positions[triangle[0]], mesh.positions[triangle[1]], mesh.positions[triangle[2]]);
-        normal_sums[vertex_a] += normal;
-        normal_sums[vertex_b] += normal;
-        normal_sums[vertex_c] += normal;
+glm::vec3 normalized_or_zero(const glm::vec3& sum) {
+    const float length = glm::length(sum);
+    return length > 0.0f ? sum / length : glm::vec3(0.0f);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
+    return vertex_normals(mesh, Normals::Mean);
+}
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting) {
+    const CornerWeights corners = corner_weights(mesh, weighting, "vertex_normals", false);
+    const std::size_t position_count = mesh.positions.size();
+
+    // Summing the weighted normals and normalising gives the direction of
+    // their weighted mean (DD9, docs/spec.md §9.2), whatever the count.
+    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!corners.usable[t]) continue;
+        for (int k = 0; k < 3; ++k) {
+            normal_sums[corners.vertex_of_position[mesh.triangles[t][k]]] +=
+                corners.weights[3 * t + k];
+        }
     }
 
     std::vector<glm::vec3> normals(position_count, glm::vec3(0.0f));
     for (std::size_t index = 0; index < position_count; ++index) {
-        const glm::vec3& sum = normal_sums[vertex_of_position[index]];
-        const float length = glm::length(sum);
-        if (length > 0.0f) normals[index] = sum / length;
+        normals[index] = normalized_or_zero(normal_sums[corners.vertex_of_position[index]]);
     }
     return normals;
+}
+
+std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
+                                      float crease_angle_degrees) {
+    if (!(crease_angle_degrees > 0.0f && crease_angle_degrees <= 180.0f)) {
+        throw std::invalid_argument("corner_normals: crease angle " +
+                                    std::to_string(crease_angle_degrees) +
+                                    " is outside (0, 180] degrees");
+    }
+    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
+    const std::size_t triangle_count = mesh.triangles.size();
+
+    const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
+    const std::size_t position_count = mesh.positions.size();
+
+    // Vertex normals, summed exactly as vertex_normals sums them.
+    std::vector<glm::vec3> vertex_normal(position_count, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (int k = 0; k < 3; ++k)
+            vertex_normal[corners.vertex_of_position[mesh.triangles[t][k]]] +=
+                corners.weights[3 * t + k];
+    }
+    for (glm::vec3& normal : vertex_normal) normal = normalized_or_zero(normal);
+
+    const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
+    // A shortcut that decides most vertices in one pass over the triangles:
+    // if every n̂_g at v lies within half the crease angle of one direction
+    // (the vertex normal), any two lie within the crease angle of each other,
+    // so nothing splits there and every corner at v has v's normal. The
+    // margin keeps the shortcut to vertices where the pairwise test below,
+    // in float, would find no split either.
+    const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
+    std::vector<std::uint8_t> pairwise(position_count, 0);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (const std::uint32_t position : mesh.triangles[t]) {
+            const std::uint32_t vertex = corners.vertex_of_position[position];
+            const glm::vec3& centre = vertex_normal[vertex];
+            if (centre == glm::vec3(0.0f) ||
+                !(double(glm::dot(centre, unit_normals[t])) > half_limit))
+                pairwise[vertex] = 1;
+        }
+    }
+
+    // Each corner's weight is read only while its own vertex is worked on,
+    // so the weights become the corners' normals in place.
+    std::vector<glm::vec3> normals = std::move(corners.weights);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
+            // An unusable triangle (a sliver between welded corners) takes
+            // its corners' unsplit vertex normals.
+            if (!corners.usable[t] || !pairwise[vertex]) normals[3 * t + k] = vertex_normal[vertex];
+        }
+    }
+
+    // The other vertices' usable corners, in triangle order (a counting
+    // sort), and each corner's sum over the faces within the crease angle.
+    std::vector<std::uint32_t> first_corner(position_count + 1, 0);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (!corners.usable[t]) continue;
+        for (const std::uint32_t position : mesh.triangles[t]) {
+            const std::uint32_t vertex = corners.vertex_of_position[position];
+            if (pairwise[vertex]) ++first_corner[vertex + 1];
+        }
+    }
+    std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
+    if (first_corner.back() == 0) return normals;
+    std::vector<std::uint32_t> corners_at_vertex(first_corner.back());
+    {
+        std::vector<std::uint32_t> next(first_corner.begin(), first_corner.end() - 1);
+        for (std::size_t t = 0; t < triangle_count; ++t) {
+            if (!corners.usable[t]) continue;
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
+                if (pairwise[vertex])
+                    corners_at_vertex[next[vertex]++] = static_cast<std::uint32_t>(3 * t + k);
+            }
+        }
+    }
+    std::vector<glm::vec3> split;  // one vertex's corner normals, before they are written
+    for (std::size_t vertex = 0; vertex < position_count; ++vertex) {
+        const std::uint32_t begin = first_corner[vertex], end = first_corner[vertex + 1];
+        if (begin == end) continue;
+        // docs/spec.md §9.2: corner f sums the triangles g with
+        // n̂_f·n̂_g > cos(crease angle), and always itself.
+        split.clear();
+        for (std::uint32_t own = begin; own < end; ++own) {
+            const std::uint32_t f = corners_at_vertex[own] / 3;
+            glm::vec3 part(0.0f);
+            for (std::uint32_t at = begin; at < end; ++at) {
+                const std::uint32_t corner = corners_at_vertex[at];
+                const std::uint32_t g = corner / 3;
+                if (g == f || double(glm::dot(unit_normals[f], unit_normals[g])) > limit)
+                    part += normals[corner];
+            }
+            split.push_back(normalized_or_zero(part));
+        }
+        for (std::uint32_t own = begin; own < end; ++own)
+            normals[corners_at_vertex[own]] = split[own - begin];
+    }
+    return normals;
+}
+
+std::string_view to_string(Normals normals) {
+    switch (normals) {
+        case Normals::Mean: return "mean";
+        case Normals::Area: return "area";
+        case Normals::Angle: return "angle";
+        case Normals::Max: return "max";
+        case Normals::File: return "file";
+    }
+    return "mean";
+}
+
+std::optional<Normals> parse_normals(std::string_view text) {
+    for (int i = 0; i < normals_count; ++i) {
+        const auto normals = static_cast<Normals>(i);
+        if (to_string(normals) == text) return normals;
+    }
+    return std::nullopt;
 }
 
 Bounds bounds(const Mesh& mesh) {

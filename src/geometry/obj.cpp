@@ -42,6 +42,8 @@ std::string trimmed(std::string text) {
     return text.substr(start);
 }
 
+}  // namespace
+
 // The line of the `face_number`-th polygon (0-based, in file order, as
 // tinyobjloader lists them: `f` lines with at least 3 corners), or 0 if the
 // file cannot be read again. Only needed to place an error.
@@ -61,8 +63,6 @@ std::uint32_t line_of_face(const std::filesystem::path& path, std::size_t face_n
     }
     return 0;
 }
-
-}  // namespace
 
 Mesh load_obj(const std::filesystem::path& path) {
     const std::string name = path.string();
@@ -110,13 +110,29 @@ Mesh load_obj(const std::filesystem::path& path) {
         mesh.positions.push_back(position);
     }
 
+    // docs/spec.md §9.2, normals = "file": the `vn` normals, checked only
+    // when used (a face without them is fine for every other weighting).
+    const std::size_t normal_count = attributes.normals.size() / 3;
+    mesh.file_normals.reserve(normal_count);
+    for (std::size_t normal = 0; normal < normal_count; ++normal) {
+        mesh.file_normals.emplace_back(attributes.normals[3 * normal],
+                                       attributes.normals[3 * normal + 1],
+                                       attributes.normals[3 * normal + 2]);
+    }
+
     std::size_t face_number = 0;  // across all shapes, in file order
     std::vector<std::uint32_t> corners;
+    std::vector<std::uint32_t> corner_normals;
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t next_index = 0;
         for (const unsigned int corner_count : shape.mesh.num_face_vertices) {
             corners.clear();
+            corner_normals.clear();
             for (unsigned int corner = 0; corner < corner_count; ++corner) {
+                const int normal = shape.mesh.indices[next_index].normal_index;
+                corner_normals.push_back(normal >= 0 && static_cast<std::size_t>(normal) < normal_count
+                                             ? static_cast<std::uint32_t>(normal)
+                                             : missing_file_normal);
                 const int vertex = shape.mesh.indices[next_index++].vertex_index;
                 if (vertex < 0 || static_cast<std::size_t>(vertex) >= vertex_count) {
                     // tinyobjloader only warns, and names the last line.
@@ -133,6 +149,9 @@ Mesh load_obj(const std::filesystem::path& path) {
             // docs/spec.md §2: the polygon (v0, v1, …, vk) becomes the fan (v0, vi, vi+1).
             for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
                 mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+                mesh.triangle_file_normals.push_back(
+                    {corner_normals[0], corner_normals[i], corner_normals[i + 1]});
+                mesh.triangle_faces.push_back(static_cast<std::uint32_t>(face_number));
             }
             ++face_number;
         }

@@ -147,6 +147,8 @@ void GlRenderer::update(const Scene& scene) {
                 scene.lights.size() == gl.scene.lights.size();
     for (std::size_t i = 0; same && i < scene.objects.size(); ++i)
         same = same_geometry(scene.objects[i], gl.scene.objects[i]) &&
+               normal_options(scene, scene.objects[i]) ==
+                   normal_options(gl.scene, gl.scene.objects[i]) &&
                models(scene, gl.options, i) == models(gl.scene, gl.options, i);
     if (!same) {
         GlRenderer fresh(scene, gl.options, CurrentContext{}, gl.context.has_value());
@@ -201,7 +203,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data = detail::gl_object(object, reflection, shading);
+            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object));
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
         }
@@ -214,7 +216,9 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
         gl.scene = scene;
         gl.options = options;
     } catch (const std::runtime_error& error) {
-        if (dynamic_cast<const IoError*>(&error)) throw;
+        // Errors in the input (an unreadable mesh file, docs/spec.md §9.2's
+        // missing file normal) are the input's, not OpenGL's.
+        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error)) throw;
         throw GlError(error.what());
     }
 }

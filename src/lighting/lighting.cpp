@@ -38,10 +38,11 @@ constexpr std::array<ReflectionModel, reflection_count> reflection_table{{
      "diffuse colour t*warm + (1 - t)*cool, t = (1 + N.L)/2, cool = min(0.2*kd*C +\n"
      "(0, 0, 0.4), 1), warm = min(0.6*kd*C + (0.4, 0.4, 0), 1); S as phong."},
 }};
-constexpr std::array<std::pair<Shading, std::string_view>, 3> shading_names{{
+constexpr std::array<std::pair<Shading, std::string_view>, 4> shading_names{{
     {Shading::Flat, "flat"},
     {Shading::Gouraud, "gouraud"},
     {Shading::Phong, "phong"},
+    {Shading::Faceted, "faceted"},
 }};
 }  // namespace
 

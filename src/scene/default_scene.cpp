@@ -28,7 +28,7 @@ fov = 30
 
 # How light is computed. Try the other models and compare:
 #   reflection: lambert | half-lambert | phong | blinn-phong
-#   shading:    flat | gouraud | phong
+#   shading:    flat | gouraud | phong | faceted
 [lighting]
 reflection = "phong"
 shading = "phong"

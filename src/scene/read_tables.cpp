@@ -19,7 +19,8 @@ constexpr std::array<std::string_view, 6> top_level_keys{"room",   "observer", "
 constexpr std::array<std::string_view, 3> room_keys{"width", "height", "depth"};
 constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "up",
                                                         "fov",      "near",    "far"};
-constexpr std::array<std::string_view, 2> lighting_keys{"reflection", "shading"};
+constexpr std::array<std::string_view, 4> lighting_keys{"reflection", "shading", "normals",
+                                                        "crease_angle"};
 constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
 // The material keys of docs/spec.md §5 and the parameters of §9.1: every
 // object takes them all, whatever its reflection model, so that models can be
@@ -44,7 +45,8 @@ std::span<const std::string_view> reflection_names() {
     }();
     return names;
 }
-constexpr std::array<std::string_view, 3> shading_names{"flat", "gouraud", "phong"};
+constexpr std::array<std::string_view, 4> shading_names{"flat", "gouraud", "phong", "faceted"};
+constexpr std::array<std::string_view, 5> normals_names{"mean", "area", "angle", "max", "file"};
 
 const Family& light_family() {
     static const Family family{
@@ -62,7 +64,8 @@ const Family& light_family() {
 const Family& object_family() {
     static const Family family{
         "object",
-        {"name", "type", "position", "rotation", "scale", "material", "reflection", "shading"},
+        {"name", "type", "position", "rotation", "scale", "material", "reflection", "shading",
+         "normals", "crease_angle"},
         {
             {"cube", {"size"}},
             {"sphere", {"radius", "segments", "rings"}},
@@ -168,6 +171,9 @@ void SceneReader::read_lighting(const Site& site) {
                                               "reflection model", parse_reflection);
     scene_.shading = read_enum<Shading>(site, "shading", shading_names, "shading model",
                                         parse_shading);
+    scene_.normals =
+        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    scene_.crease_angle_degrees = read_number(site, "crease_angle");
 }
 
 void SceneReader::read_output(const Site& site) {
@@ -284,6 +290,9 @@ void SceneReader::read_object(const Site& site) {
                                               "reflection model", parse_reflection);
     object.shading =
         read_enum<Shading>(site, "shading", shading_names, "shading model", parse_shading);
+    object.normals =
+        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    object.crease_angle_degrees = read_number(site, "crease_angle");
     read_material(site, object.material);
     if (!type) return;
 

@@ -6,10 +6,16 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "litkit/shapes.hpp"
+#include "scene/validate_internal.hpp"
 
 namespace litkit {
 
@@ -80,9 +86,115 @@ Mesh object_mesh(const SceneObject& object) {
     return std::visit(Build{}, object.shape);
 }
 
-WorldMesh world_mesh(const SceneObject& object) {
+namespace {
+
+// docs/spec.md §9.2: a position once per distinct normal at it. A position's
+// first normal keeps the position's own index, so that where nothing splits
+// (a sphere under a crease) the mesh is exactly the unsplit one.
+void split_by_corner_normals(Mesh& mesh, const std::vector<glm::vec3>& normals_of_corners,
+                             std::vector<glm::vec3>& normals) {
+    const std::size_t position_count = mesh.positions.size();
+    constexpr std::uint32_t none = 0xffffffffu;
+    std::vector<bool> assigned(position_count, false);
+    normals.assign(position_count, glm::vec3(0.0f));
+    std::vector<std::uint32_t> next_copy(position_count, none);  // more copies of a position
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            std::uint32_t& corner = mesh.triangles[t][k];
+            const glm::vec3& normal = normals_of_corners[3 * t + k];
+            if (!assigned[corner]) {
+                assigned[corner] = true;
+                normals[corner] = normal;
+                continue;
+            }
+            std::uint32_t copy = corner;
+            std::uint32_t last = corner;
+            while (copy != none && normals[copy] != normal) {
+                last = copy;
+                copy = next_copy[copy];
+            }
+            if (copy == none) {
+                copy = static_cast<std::uint32_t>(mesh.positions.size());
+                mesh.positions.push_back(mesh.positions[corner]);
+                normals.push_back(normal);
+                next_copy.push_back(none);
+                next_copy[last] = copy;
+            }
+            corner = copy;
+        }
+    }
+}
+
+// docs/spec.md §9.2 "file": each corner's normal as the mesh file gives it.
+std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& object) {
+    const auto* file = std::get_if<MeshFileShape>(&object.shape);
+    if (!file || mesh.triangle_file_normals.size() != mesh.triangles.size()) {
+        throw std::invalid_argument("world_mesh: normals = \"file\" needs a mesh object");
+    }
+    std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t index = mesh.triangle_file_normals[t][k];
+            if (index == missing_file_normal) {
+                throw SceneError({missing_file_normal_error(*file, mesh, t)});
+            }
+            normals[3 * t + k] = mesh.file_normals[index];
+        }
+    }
+    return normals;
+}
+
+}  // namespace
+
+Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh,
+                                     std::size_t triangle) {
+    const std::uint32_t face = mesh.triangle_faces[triangle];
+    return Diagnostic{FileLoc{file.file.string(), line_of_face(file.file, face), 0},
+                      Severity::Error,
+                      "face " + std::to_string(face + 1) +
+                          " has a corner without a normal (v/vt/vn or v//vn), which "
+                          "normals = \"file\" needs"};
+}
+
+std::optional<Diagnostic> check_file_normals(const MeshFileShape& file, const Mesh& mesh) {
+    for (std::size_t t = 0; t < mesh.triangle_file_normals.size(); ++t) {
+        for (const std::uint32_t normal : mesh.triangle_file_normals[t]) {
+            if (normal == missing_file_normal) return missing_file_normal_error(file, mesh, t);
+        }
+    }
+    return std::nullopt;
+}
+
+NormalOptions normal_options(const Scene& scene, const SceneObject& object) {
+    NormalOptions options;
+    if (object.normals) {
+        options.normals = *object.normals;
+    } else if (scene.normals) {
+        const bool from_file = std::holds_alternative<MeshFileShape>(object.shape);
+        options.normals = *scene.normals == Normals::File && !from_file ? Normals::Mean
+                                                                         : *scene.normals;
+    }
+    options.crease_angle_degrees =
+        object.crease_angle_degrees ? object.crease_angle_degrees : scene.crease_angle_degrees;
+    return options;
+}
+
+WorldMesh world_mesh(const SceneObject& object) { return world_mesh(object, NormalOptions{}); }
+
+WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
     Mesh mesh = object_mesh(object);
-    const std::vector<glm::vec3> local_normals = vertex_normals(mesh);
+    std::vector<glm::vec3> local_normals;
+    const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
+    if (options.normals == Normals::File) {
+        // docs/spec.md §9.2: with the file's normals the crease angle is ignored.
+        split_by_corner_normals(mesh, file_corner_normals(mesh, object), local_normals);
+    } else if (creased) {
+        split_by_corner_normals(
+            mesh, corner_normals(mesh, options.normals, *options.crease_angle_degrees),
+            local_normals);
+    } else {
+        local_normals = vertex_normals(mesh, options.normals);
+    }
     const glm::mat4 model = object_to_world(object);
     const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
 

@@ -70,6 +70,7 @@ public:
     std::vector<Diagnostic> run() {
         check_room();
         check_output();
+        check_lighting();
         check_observer();
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
@@ -163,6 +164,18 @@ private:
         integer_in(output.width, 1, 16384, "output.width", "output", "width");
         integer_in(output.height, 1, 16384, "output.height", "output", "height");
         at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
+    }
+
+    // docs/spec.md §9.2: crease_angle in (0, 180].
+    void crease_angle(const std::optional<float>& degrees, const std::string& path,
+                      const std::string& who) {
+        if (degrees && !(*degrees > 0.0f && *degrees <= 180.0f))
+            error(path, who, "crease_angle must be in (0, 180] degrees, found " +
+                                 number_text(*degrees));
+    }
+
+    void check_lighting() {
+        crease_angle(scene_.crease_angle_degrees, "lighting.crease_angle", "lighting");
     }
 
     void check_observer() {
@@ -271,6 +284,12 @@ private:
                 }
             },
             m);
+        crease_angle(object.crease_angle_degrees, base + ".crease_angle", who);
+        if (object.normals == Normals::File && !std::holds_alternative<MeshFileShape>(object.shape))
+            error(base + ".normals", who,
+                  "normals = \"file\" needs a mesh object (type = \"mesh\"); a " +
+                      std::string(shape_type_name(object.shape)) +
+                      " has no file normals (use mean, area, angle or max)");
 
         struct ShapeCheck {
             Validator& v;
@@ -343,6 +362,12 @@ private:
                     reason += " (line " + std::to_string(failure.location().line) + ")";
                 throw IoError(failure.path(), reason,
                               where("objects[" + std::to_string(i) + "].file"));
+            }
+            // docs/spec.md §9.2: "file" normals need one at every face corner.
+            const auto* file = std::get_if<MeshFileShape>(&object.shape);
+            if (file && normal_options(scene_, object).normals == Normals::File) {
+                if (auto missing = check_file_normals(*file, mesh))
+                    diagnostics_.push_back(std::move(*missing));
             }
             const glm::mat4 model = object_to_world(object);
             std::vector<glm::vec3>& hull = hulls_[i].emplace();

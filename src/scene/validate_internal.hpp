@@ -3,6 +3,8 @@
 // follow-on errors.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -18,5 +20,12 @@ namespace litkit {
 using BrokenEntities = std::set<std::string, std::less<>>;
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken);
+
+// docs/spec.md §9.2, normals = "file": the error for a face corner of a mesh
+// file without a normal, located at that face's line in the mesh file; and
+// the first such error of a mesh, if any.
+Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh,
+                                     std::size_t triangle);
+std::optional<Diagnostic> check_file_normals(const MeshFileShape& file, const Mesh& mesh);
 
 }  // namespace litkit

@@ -116,6 +116,8 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
         object.shape);
     text += "position = " + vec3(object.position) + "\nrotation = " + vec3(object.rotation_degrees) +
             "\nscale = " + number(object.scale) + "\n";
+    if (object.normals) text += "normals = \"" + std::string(to_string(*object.normals)) + "\"\n";
+    if (object.crease_angle_degrees) text += "crease_angle = " + number(*object.crease_angle_degrees) + "\n";
     if (object.reflection) text += "reflection = \"" + std::string(to_string(*object.reflection)) + "\"\n";
     if (object.shading) text += "shading = \"" + std::string(to_string(*object.shading)) + "\"\n";
     const Material& m = object.material;
@@ -141,10 +143,13 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
     text += "\n[observer]\nposition = " + vec3(o.position) + "\nlook_at = " + vec3(o.look_at) +
             "\nup = " + vec3(o.up) + "\nfov = " + number(o.fov_degrees) + "\nnear = " +
             number(o.near) + "\nfar = " + number(o.far) + "\n";
-    if (scene.reflection || scene.shading) {
+    if (scene.reflection || scene.shading || scene.normals || scene.crease_angle_degrees) {
         text += "\n[lighting]\n";
         if (scene.reflection) text += "reflection = \"" + std::string(to_string(*scene.reflection)) + "\"\n";
         if (scene.shading) text += "shading = \"" + std::string(to_string(*scene.shading)) + "\"\n";
+        if (scene.normals) text += "normals = \"" + std::string(to_string(*scene.normals)) + "\"\n";
+        if (scene.crease_angle_degrees)
+            text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
     }
     text += "\n[output]\nwidth = " + std::to_string(scene.output.width) + "\nheight = " +
             std::to_string(scene.output.height) + "\nbackground = " + rgb8(scene.output.background) +

@@ -59,7 +59,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
     explanation.sum = probe.intensity;
 
     // The object in the world as the renderer has it (the same function).
-    const WorldMesh mesh = world_mesh(object);
+    const WorldMesh mesh = world_mesh(object, normal_options(scene, object));
     for (int k = 0; k < 3; ++k) {
         explanation.corners[static_cast<std::size_t>(k)] =
             mesh.positions.at(probe.vertices[static_cast<std::size_t>(k)]);

@@ -185,6 +185,11 @@ std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
             }
             text += "  I = w0 * I0 + w1 * I1 + w2 * I2\n";
             break;
+        case Shading::Faceted:
+            text += "faceted shading (docs/spec.md §9.2): lit at the pixel, p interpolated from the\n"
+                    "corners with the weights, N the face normal\n";
+            text += evaluation_lines(e.evaluations.at(0), scene, material, "  ");
+            break;
         default:
             text += std::string(to_string(e.shading)) +
                     " shading (docs/spec.md §3): lit at the pixel, p and N interpolated from the\n"

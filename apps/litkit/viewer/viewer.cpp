@@ -182,6 +182,7 @@ constexpr KeyModel shading_keys[] = {
     {SDLK_f, litkit::Shading::Flat},
     {SDLK_g, litkit::Shading::Gouraud},
     {SDLK_p, litkit::Shading::Phong},
+    {SDLK_d, litkit::Shading::Faceted},
 };
 
 }  // namespace
