@@ -3,6 +3,7 @@
 // status they get (docs/spec.md §6: 0 success, 1 a file could not be read or written,
 // 2 invalid input or usage).
 #include <CLI/CLI.hpp>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -36,6 +37,44 @@ namespace fs = std::filesystem;
 constexpr int exit_success = 0;
 constexpr int exit_io = 1;
 constexpr int exit_invalid = 2;
+
+// A catchable signal ends the run as it would have, but first removes the
+// temporary files of a write in progress (docs/reliability.md). A file size
+// limit (ulimit -f) makes write() fail with EFBIG instead of killing the
+// process, so that the failed write is reported and cleaned up like a full disk.
+extern "C" void remove_temporaries_and_end(int signal_number) {
+    litkit::remove_registered_temporaries();
+    ::raise(signal_number);  // SA_RESETHAND | SA_NODEFER: the default action, now
+}
+
+void install_signal_handlers() {
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_end;
+    action.sa_flags = SA_RESETHAND | SA_NODEFER;
+    sigemptyset(&action.sa_mask);
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) {
+        struct sigaction previous {};
+        // A signal ignored by whoever started us (nohup) stays ignored.
+        if (::sigaction(signal_number, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN)
+            continue;
+        ::sigaction(signal_number, &action, nullptr);
+    }
+    ::signal(SIGXFSZ, SIG_IGN);
+}
+
+// `-o -`: the picture goes to standard output, so every message goes to
+// standard error.
+bool is_standard_output(const std::filesystem::path& output) {
+    return output == "-" || output == "/dev/stdout";
+}
+
+void write_png_output(const litkit::Image& image, const std::filesystem::path& output) {
+    if (is_standard_output(output)) {
+        litkit::write_all(STDOUT_FILENO, litkit::encode_png(image), "standard output");
+    } else {
+        litkit::write_png(image, output);
+    }
+}
 
 // What `render` and `bench` share: the scene and what replaces parts of it.
 struct SceneArguments {
@@ -257,10 +296,10 @@ int run_render(const RenderArguments& arguments) {
     Backend renderer(scene, arguments.scene);
     litkit::Image image;
     renderer.render_into(image);
-    litkit::write_png(image, output);
+    write_png_output(image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
+    (is_standard_output(output) ? std::cerr : std::cout) << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
               << ", " << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
               << " ms" << (arguments.scene.backend == "gl" ? "; " + renderer.description() : "")
               << ")\n";
@@ -329,7 +368,9 @@ std::string program_name_for(const std::vector<std::string>& scenes) {
 int run_export(const ExportArguments& arguments) {
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
-    const litkit::ExportOptions options{.replace_existing = arguments.force};
+    const litkit::ExportOptions options{
+        .replace_existing = arguments.force,
+        .inputs = {arguments.scene.scenes.begin(), arguments.scene.scenes.end()}};
     const fs::path directory = arguments.directory;
     std::vector<fs::path> written;
     std::string program;
@@ -573,7 +614,7 @@ int main(int argc, char** argv) {
     CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
     add_scene_options(render, render_arguments.scene);
     render->add_option("-o,--output", render_arguments.output,
-                       "Output PNG (default: the first scene's name with .png)");
+                       "Output PNG (default: the first scene's name with .png; -: standard output)");
     render->add_flag("-y,--yes", render_arguments.yes,
                      "Use the default models (phong / phong) where [lighting] leaves one out");
 
@@ -684,6 +725,9 @@ int main(int argc, char** argv) {
         return exit_invalid;
     }
 
+    // The viewer ends on SIGINT/SIGTERM through SDL, which installs its own
+    // handlers only where none is set.
+    if (!view->parsed()) install_signal_handlers();
     try {
         if (render->parsed()) return run_render(render_arguments);
         if (check->parsed()) return run_check(check_scenes);

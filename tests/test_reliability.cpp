@@ -1,0 +1,404 @@
+// Issue 14: output written whole to what the user named and nothing else;
+// input bounded, located and exact; scale. Real files, real device nodes and
+// FIFOs made in a temporary folder (the tests run as root), real signals.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/inotify.h>
+#include <sys/mount.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "litkit/error.hpp"
+#include "litkit/files.hpp"
+#include "litkit/image.hpp"
+#include "run_command.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using litkit_test::CommandRun;
+using litkit_test::run_command;
+
+const char* small_scene = R"(
+[room]
+width = 10
+height = 10
+depth = 10
+
+[observer]
+position = [0, 0, 4]
+
+[lighting]
+reflection = "phong"
+shading = "phong"
+
+[output]
+width = 64
+height = 48
+
+[[lights]]
+type = "point"
+position = [0, 3, 3]
+intensity = 10
+
+[[objects]]
+type = "sphere"
+radius = 1
+)";
+
+class Reliability : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("litkit-rel-" + std::to_string(::getpid()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        write("scene.toml", small_scene);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    void write(const fs::path& name, const std::string& text) {
+        std::ofstream(dir / name, std::ios::binary) << text;
+    }
+    std::string read(const fs::path& name) {
+        std::ifstream in(dir / name, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+    CommandRun cli(const std::string& arguments) {
+        return shell("'" LITKIT_CLI "' " + arguments);
+    }
+    CommandRun shell(const std::string& command) {
+        // In a subshell, so that run_command's own redirections apply to all of it.
+        return run_command("cd '" + dir.string() + "' && ( " + command + " )");
+    }
+    // The names in the folder other than those given.
+    std::vector<std::string> others(std::vector<std::string> expected) {
+        std::vector<std::string> found;
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            const std::string name = entry.path().filename().string();
+            if (std::find(expected.begin(), expected.end(), name) == expected.end())
+                found.push_back(name);
+        }
+        return found;
+    }
+    fs::path dir;
+};
+
+bool is_png(const std::string& bytes) { return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
+
+// ---- A1: special files are written through, links followed, modes kept ----
+
+TEST_F(Reliability, RenderToANullDeviceWritesThroughAndKeepsTheDevice) {
+    ASSERT_EQ(::mknod((dir / "null").c_str(), S_IFCHR | 0666, ::makedev(1, 3)), 0)
+        << std::strerror(errno);
+    CommandRun run = cli("render scene.toml -o null");
+    EXPECT_EQ(run.status, 0) << run.output;
+    struct stat status {};
+    ASSERT_EQ(::lstat((dir / "null").c_str(), &status), 0);
+    EXPECT_TRUE(S_ISCHR(status.st_mode));
+    EXPECT_EQ(status.st_rdev, ::makedev(1, 3));
+    EXPECT_EQ(others({"scene.toml", "null"}), std::vector<std::string>{});
+}
+
+TEST_F(Reliability, RenderThroughASymlinkToADeviceKeepsLinkAndDevice) {
+    ASSERT_EQ(::mknod((dir / "null").c_str(), S_IFCHR | 0666, ::makedev(1, 3)), 0);
+    fs::create_symlink("null", dir / "link");
+    CommandRun run = cli("render scene.toml -o link");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_TRUE(fs::is_symlink(dir / "link"));
+    EXPECT_TRUE(fs::is_character_file(dir / "null"));
+}
+
+TEST_F(Reliability, RenderToAFifoWritesThroughIt) {
+    ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0644), 0);
+    CommandRun run = shell("{ cat pipe > received.png & } && '" LITKIT_CLI
+                           "' render scene.toml -o pipe && wait");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_TRUE(fs::is_fifo(dir / "pipe"));
+    EXPECT_EQ(litkit::read_png(dir / "received.png").width, 64);
+}
+
+TEST_F(Reliability, RenderThroughASymlinkReplacesItsTargetAndKeepsTheLink) {
+    fs::create_directories(dir / "pictures");
+    write("pictures/real.png", "old");
+    fs::create_symlink("pictures/real.png", dir / "link.png");
+    CommandRun run = cli("render scene.toml -o link.png");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_TRUE(fs::is_symlink(dir / "link.png"));
+    EXPECT_EQ(litkit::read_png(dir / "pictures/real.png").height, 48);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "pictures"), {}), 1);
+}
+
+TEST_F(Reliability, AReplacedFileKeepsItsMode) {
+    write("out.png", "old");
+    ASSERT_EQ(::chmod((dir / "out.png").c_str(), 0600), 0);
+    CommandRun run = cli("render scene.toml -o out.png");
+    EXPECT_EQ(run.status, 0) << run.output;
+    struct stat status {};
+    ASSERT_EQ(::stat((dir / "out.png").c_str(), &status), 0);
+    EXPECT_EQ(status.st_mode & 07777, 0600u);
+    EXPECT_TRUE(is_png(read("out.png")));
+}
+
+TEST_F(Reliability, DashWritesThePngToStandardOutputAndMessagesToStandardError) {
+    CommandRun run = cli("render scene.toml -o - > stdout.png 2> stderr.txt");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(litkit::read_png(dir / "stdout.png").width, 64);
+    EXPECT_NE(read("stderr.txt").find("litkit: wrote - (64x48"), std::string::npos)
+        << read("stderr.txt");
+    EXPECT_FALSE(fs::exists(dir / "-"));
+}
+
+TEST_F(Reliability, DevStdoutWritesThroughToAPipe) {
+    CommandRun run = cli("render scene.toml -o /dev/stdout 2> stderr.txt | cat > piped.png");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(litkit::read_png(dir / "piped.png").width, 64);
+}
+
+// ---- A2: names, folders, signals, size limits, full disks ----
+
+TEST_F(Reliability, ANameOfNameMaxBytesWorks) {
+    const std::string name = std::string(251, 'a') + ".png";  // 255 bytes: NAME_MAX
+    CommandRun run = cli("render scene.toml -o " + name);
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_TRUE(is_png(read(name)));
+    EXPECT_EQ(others({"scene.toml", name}), std::vector<std::string>{});
+}
+
+TEST_F(Reliability, AFolderAsOutputGetsAClearMessage) {
+    fs::create_directories(dir / "existing");
+    CommandRun slash = cli("render scene.toml -o existing/");
+    EXPECT_EQ(slash.status, 1);
+    EXPECT_NE(slash.output.find("error: cannot write 'existing/': is a folder; name a file to write"), std::string::npos)
+        << slash.output;
+    CommandRun bare = cli("render scene.toml -o existing");
+    EXPECT_EQ(bare.status, 1);
+    EXPECT_NE(bare.output.find("error: cannot write 'existing': is a folder; name a file to write"), std::string::npos)
+        << bare.output;
+    CommandRun missing = cli("render scene.toml -o missing/");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.output.find("error: cannot write 'missing/': names a folder (ends with '/'); name a file to write"), std::string::npos)
+        << missing.output;
+    EXPECT_EQ(others({"scene.toml", "existing"}), std::vector<std::string>{});
+    EXPECT_TRUE(fs::is_empty(dir / "existing"));
+}
+
+TEST_F(Reliability, AFileSizeLimitLeavesNoTemporaryFile) {
+    write("out.png", "old picture");
+    // dash counts ulimit -f in 512-byte blocks: 1 block is less than the PNG.
+    CommandRun run = shell("ulimit -f 1 && '" LITKIT_CLI "' render scene.toml -o out.png");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("File too large"), std::string::npos) << run.output;
+    EXPECT_EQ(read("out.png"), "old picture");
+    EXPECT_EQ(others({"scene.toml", "out.png"}), std::vector<std::string>{});
+}
+
+// A full disk: a 64 KiB tmpfs mounted in the temporary folder (root only).
+TEST_F(Reliability, AFullDiskLeavesNoTemporaryFileAndTheOldFile) {
+    const fs::path small = dir / "small";
+    fs::create_directories(small);
+    ASSERT_EQ(::mount("tmpfs", small.c_str(), "tmpfs", 0, "size=64k"), 0) << std::strerror(errno);
+    std::ofstream(small / "out.png") << "old picture";
+    CommandRun run = cli("render scene.toml --width 1024 --height 1024 -o small/out.png");
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(small))
+        left.push_back(entry.path().filename().string());
+    std::string old;
+    {
+        std::ifstream in(small / "out.png");
+        old.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    ::umount(small.c_str());
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("No space left on device"), std::string::npos) << run.output;
+    EXPECT_EQ(left, std::vector<std::string>{"out.png"});
+    EXPECT_EQ(old, "old picture");
+}
+
+// Starts litkit on a large picture, waits (inotify) for the temporary file
+// to appear, stops the process, and sends `signal_number` only if the
+// picture has not been renamed into place yet. True when the signal came
+// during the write; then the process must have died of it, leaving nothing.
+bool signal_during_write(const fs::path& dir, int signal_number, std::string& problem) {
+    const int watch = ::inotify_init1(IN_CLOEXEC);
+    if (watch < 0 || ::inotify_add_watch(watch, dir.c_str(), IN_CREATE) < 0) {
+        problem = "inotify";
+        return false;
+    }
+    const pid_t child = ::fork();
+    if (child == 0) {
+        if (::chdir(dir.c_str()) != 0) ::_exit(127);
+        ::signal(signal_number, SIG_DFL);
+        const int null = ::open("/dev/null", O_RDWR);
+        ::dup2(null, 0);
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::execl(LITKIT_CLI, LITKIT_CLI, "render", "scene.toml", "--width", "4096", "--height",
+                "4096", "-o", "out.png", static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    bool stopped = false;
+    alignas(inotify_event) char buffer[4096];
+    while (!stopped) {
+        const ssize_t n = ::read(watch, buffer, sizeof buffer);
+        if (n <= 0) break;
+        for (ssize_t at = 0; at < n;) {
+            const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+            if (event->len && std::string(event->name).rfind(".litkit-", 0) == 0) {
+                ::kill(child, SIGSTOP);
+                stopped = true;
+            }
+            at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+        }
+    }
+    ::close(watch);
+    int status = 0;
+    if (!stopped) {
+        ::waitpid(child, &status, 0);
+        problem = "no temporary file seen";
+        return false;
+    }
+    ::waitpid(child, &status, WUNTRACED);  // until it has stopped
+    const bool renamed = fs::exists(dir / "out.png");
+    ::kill(child, renamed ? SIGCONT : signal_number);
+    if (!renamed) ::kill(child, SIGCONT);
+    ::waitpid(child, &status, 0);
+    if (renamed) {
+        fs::remove(dir / "out.png");
+        return false;
+    }
+    if (!WIFSIGNALED(status) || WTERMSIG(status) != signal_number)
+        problem = "the process did not die of the signal (status " + std::to_string(status) + ")";
+    return true;
+}
+
+void expect_signal_leaves_nothing(const fs::path& dir, int signal_number) {
+    bool caught = false;
+    for (int attempt = 0; attempt < 10 && !caught; ++attempt) {
+        std::string problem;
+        caught = signal_during_write(dir, signal_number, problem);
+        if (caught) {
+            EXPECT_EQ(problem, "");
+        }
+    }
+    ASSERT_TRUE(caught) << "the signal never came before the rename in 10 runs";
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(dir))
+        left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"scene.toml"});
+}
+
+TEST_F(Reliability, SigtermDuringTheWriteLeavesNoTemporaryFile) {
+    expect_signal_leaves_nothing(dir, SIGTERM);
+}
+
+TEST_F(Reliability, SigintDuringTheWriteLeavesNoTemporaryFile) {
+    expect_signal_leaves_nothing(dir, SIGINT);
+}
+
+// ---- A3: export never writes over its inputs, and writes its folder whole ----
+
+TEST_F(Reliability, ExportRefusesToWriteOverTheSceneItExports) {
+    fs::create_directories(dir / "e");
+    write("e/main.cpp", small_scene);
+    for (const std::string force : {"", " --force"}) {
+        CommandRun run = cli("export --format cpp e/main.cpp -o e" + force);
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_NE(run.output.find("error: refusing to write 'e/main.cpp' over input file "
+                                  "'e/main.cpp'; choose another folder with -o"),
+                  std::string::npos)
+            << run.output;
+        EXPECT_EQ(read("e/main.cpp"), small_scene);
+        EXPECT_FALSE(fs::exists(dir / "e/CMakeLists.txt"));
+    }
+}
+
+// Mounts a 64 KiB tmpfs at dir/small; the generated program is larger.
+class SmallDisk : public Reliability {
+protected:
+    void SetUp() override {
+        Reliability::SetUp();
+        small = dir / "small";
+        fs::create_directories(small);
+        mounted = ::mount("tmpfs", small.c_str(), "tmpfs", 0, "size=64k") == 0;
+        ASSERT_TRUE(mounted) << std::strerror(errno);
+    }
+    void TearDown() override {
+        if (mounted) ::umount(small.c_str());
+        Reliability::TearDown();
+    }
+    std::vector<std::string> listing(const fs::path& folder) {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(folder))
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+    fs::path small;
+    bool mounted = false;
+};
+
+TEST_F(SmallDisk, ExportOnAFullDiskCreatesNoFolder) {
+    CommandRun run = cli("export --format cpp scene.toml -o small/program");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("No space left on device"), std::string::npos) << run.output;
+    EXPECT_EQ(listing(small), std::vector<std::string>{});
+}
+
+TEST_F(SmallDisk, ExportWithForceOnAFullDiskKeepsBothOldFiles) {
+    fs::create_directories(small / "program");
+    std::ofstream(small / "program/main.cpp") << "old main";
+    std::ofstream(small / "program/CMakeLists.txt") << "old cmake";
+    CommandRun run = cli("export --format cpp scene.toml -o small/program --force");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("No space left on device"), std::string::npos) << run.output;
+    EXPECT_EQ(listing(small / "program"), (std::vector<std::string>{"CMakeLists.txt", "main.cpp"}));
+    EXPECT_EQ(read("small/program/main.cpp"), "old main");
+    EXPECT_EQ(read("small/program/CMakeLists.txt"), "old cmake");
+}
+
+TEST_F(Reliability, ExportIntoAnExistingFolderReplacesBothAndKeepsOtherFiles) {
+    fs::create_directories(dir / "program");
+    write("program/main.cpp", "old main");
+    write("program/notes.txt", "mine");
+    ASSERT_EQ(::chmod((dir / "program/main.cpp").c_str(), 0600), 0);
+    CommandRun run = cli("export --format cpp scene.toml -o program --force");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(read("program/main.cpp").find("int main("), std::string::npos);
+    EXPECT_NE(read("program/CMakeLists.txt").find("add_executable(scene main.cpp)"),
+              std::string::npos);
+    EXPECT_EQ(read("program/notes.txt"), "mine");
+    struct stat status {};
+    ASSERT_EQ(::stat((dir / "program/main.cpp").c_str(), &status), 0);
+    EXPECT_EQ(status.st_mode & 07777, 0600u);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "program"), {}), 3);
+}
+
+TEST(TemporaryRegistry, RemovesFilesThenFolders) {
+    const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "a") << "x";
+    const int folder_slot = litkit::register_temporary(folder);
+    const int file_slot = litkit::register_temporary(folder / "a");
+    ASSERT_GE(folder_slot, 0);
+    ASSERT_GE(file_slot, 0);
+    litkit::remove_registered_temporaries();
+    EXPECT_FALSE(fs::exists(folder));
+    litkit::unregister_temporary(file_slot);
+    litkit::unregister_temporary(folder_slot);
+}
+
+}  // namespace
