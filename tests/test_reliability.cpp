@@ -387,6 +387,166 @@ TEST_F(Reliability, ExportIntoAnExistingFolderReplacesBothAndKeepsOtherFiles) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir / "program"), {}), 3);
 }
 
+// ---- B4: nesting is bounded before toml++ recurses ----
+
+TEST_F(Reliability, ATableHeaderOf50000PartsIsRefusedWhereItGoesTooDeep) {
+    std::string header = "[a";
+    for (int i = 1; i < 50000; ++i) header += ".a";
+    write("deep.toml", header + "]\n");
+    CommandRun run = cli("check deep.toml");
+    EXPECT_EQ(run.status, 1) << run.output;
+    // '[' is one level and each dot one more: the 64th dot, at column 129, is level 65.
+    EXPECT_EQ(run.output, "deep.toml:1:129: error: cannot read 'deep.toml': nested deeper than 64 "
+                          "levels (tables, arrays and dotted keys; docs/reliability.md)\n");
+}
+
+TEST_F(Reliability, DeepDottedKeysArraysAndInlineTablesAreRefused) {
+    std::string key = "a";
+    for (int i = 1; i < 50000; ++i) key += ".a";
+    write("key.toml", key + " = 1\n");
+    write("arrays.toml", "x = " + std::string(50000, '[') + std::string(50000, ']') + "\n");
+    std::string tables = "x = ";
+    for (int i = 0; i < 50000; ++i) tables += "{a = ";
+    write("tables.toml", tables + "1" + std::string(50000, '}') + "\n");
+    // The 65th level: the 65th dot of the key (column 130); the 65th '['
+    // (column 4 + 65); the 65th '{' (column 4 + 64 * 5 + 1).
+    const std::pair<const char*, const char*> cases[] = {
+        {"key.toml", "key.toml:1:130:"},
+        {"arrays.toml", "arrays.toml:1:69:"},
+        {"tables.toml", "tables.toml:1:325:"}};
+    for (const auto& [file, place] : cases) {
+        CommandRun run = cli(std::string("check ") + file);
+        EXPECT_EQ(run.status, 1) << run.output;
+        EXPECT_EQ(run.output.rfind(std::string(place) + " error: cannot read '" + file +
+                                       "': nested deeper than 64 levels",
+                                   0),
+                  0u)
+            << run.output;
+    }
+}
+
+TEST_F(Reliability, BracketsAndDotsInStringsAndCommentsAreNotNesting) {
+    std::string scene = small_scene;
+    scene += "# " + std::string(200, '[') + " a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a\n";
+    std::string name = "name = \"" + std::string(100, '[');
+    for (int i = 0; i < 100; ++i) name += "a.";
+    scene += name + "\"\n";
+    scene += "[output.background]\n";  // not a scene key: a located SceneError, not a nesting one
+    write("strings.toml", scene);
+    CommandRun run = cli("check strings.toml");
+    EXPECT_EQ(run.output.find("nested deeper"), std::string::npos) << run.output;
+    EXPECT_EQ(run.status, 2) << run.output;
+}
+
+TEST_F(Reliability, NestingAtTheLimitIsReadByToml) {
+    std::string header = "[a";
+    for (int i = 1; i < 64; ++i) header += ".a";
+    write("limit.toml", header + "]\nx = 1\n");
+    CommandRun run = cli("check limit.toml");
+    EXPECT_EQ(run.output.find("nested deeper"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("limit.toml:1:2: error:"), std::string::npos) << run.output;
+}
+
+// ---- B5: input files are bounded; pipes and standard input work ----
+
+TEST_F(Reliability, AZeroDeviceAsTheSceneIsRefusedQuicklyWithItsName) {
+    ASSERT_EQ(::mknod((dir / "zero").c_str(), S_IFCHR | 0666, ::makedev(1, 5)), 0);
+    const auto start = std::chrono::steady_clock::now();
+    CommandRun run = cli("check zero");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_EQ(run.output, "error: cannot read 'zero': larger than the limit of 256 MiB for scene "
+                          "and mesh files (docs/reliability.md)\n");
+    EXPECT_LT(seconds, 10.0);
+}
+
+TEST_F(Reliability, AZeroDeviceAsTheMeshIsRefusedWithItsName) {
+    ASSERT_EQ(::mknod((dir / "zero").c_str(), S_IFCHR | 0666, ::makedev(1, 5)), 0);
+    write("mesh.toml", std::string(small_scene) +
+                           "[[objects]]\ntype = \"mesh\"\nfile = \"zero\"\nposition = [3, 0, 0]\n");
+    CommandRun run = cli("check mesh.toml");
+    EXPECT_EQ(run.status, 1) << run.output;
+    // Located at the scene's `file` key (line 28), as a mesh file that cannot be opened.
+    EXPECT_EQ(run.output, "mesh.toml:28:8: error: cannot read 'zero': larger than the limit of "
+                          "256 MiB for scene and mesh files (docs/reliability.md)\n");
+}
+
+TEST_F(Reliability, ARegularFileOverTheLimitIsRefusedWithoutReadingIt) {
+    std::filesystem::resize_file((write("big.toml", ""), dir / "big.toml"), (256u << 20) + 1);
+    CommandRun run = cli("check big.toml");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("cannot read 'big.toml': larger than the limit of 256 MiB"),
+              std::string::npos)
+        << run.output;
+}
+
+TEST_F(Reliability, AFifoAndStandardInputStillWork) {
+    ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0644), 0);
+    CommandRun fifo = shell("{ cat scene.toml > pipe & } && '" LITKIT_CLI "' check pipe && wait");
+    EXPECT_EQ(fifo.status, 0) << fifo.output;
+    EXPECT_EQ(fifo.output, "ok\n");
+    CommandRun dash = shell("'" LITKIT_CLI "' check - < scene.toml");
+    EXPECT_EQ(dash.status, 0) << dash.output;
+    EXPECT_EQ(dash.output, "ok\n");
+    CommandRun render = shell("'" LITKIT_CLI "' render - -o piped.png < scene.toml");
+    EXPECT_EQ(render.status, 0) << render.output;
+    EXPECT_EQ(litkit::read_png(dir / "piped.png").width, 64);
+}
+
+// ---- B6: OBJ numbers are exact or a located error ----
+
+TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
+    write("mesh.toml", std::string(small_scene) +
+                           "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
+    const std::string after = " (objects[1].file at mesh.toml:28:8)\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"v nan 0 0", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+                          "': vertex x coordinate 'nan' is not a finite number"},
+        {"v 0 inf 0", "mesh.obj:3:5: error: cannot read '" + std::string("mesh.obj") +
+                          "': vertex y coordinate 'inf' is not a finite number"},
+        {"v abc def ghi", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+                              "': vertex x coordinate 'abc' is not a number"},
+        {"v 1", "mesh.obj:3:4: error: cannot read '" + std::string("mesh.obj") +
+                    "': vertex needs 3 coordinates, found 1"},
+        {"v 0,5 -0,5 0,5", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+                               "': vertex x coordinate '0,5' is not a number (write the decimal "
+                               "separator as a point: '.')"},
+        {"v 0 0 1e999", "mesh.obj:3:7: error: cannot read '" + std::string("mesh.obj") +
+                            "': vertex z coordinate '1e999' is beyond the range of numbers litkit reads"},
+    };
+    for (const auto& [line, expected] : cases) {
+        write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + line + "\nf 1 2 3\n");
+        CommandRun run = cli("check mesh.toml");
+        EXPECT_EQ(run.status, 1) << line;
+        // The mesh file's path is resolved against the scene's folder.
+        EXPECT_EQ(run.output, expected + after) << line;
+    }
+}
+
+TEST_F(Reliability, FaceIndicesOutOfRangeAreLocatedErrors) {
+    write("mesh.toml", std::string(small_scene) +
+                           "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
+    const std::string path = "mesh.obj";
+    const std::pair<std::string, std::string> cases[] = {
+        {"f 1 2 -4", path + ":4:7: error: cannot read '" + path +
+                         "': face 1 refers to vertex -4, but the file defines 3 vertices before it"},
+        {"f 1 2 3/1", path + ":4:9: error: cannot read '" + path +
+                          "': face 1 refers to texture coordinate 1, but the file defines 0 "
+                          "texture coordinates"},
+        {"f 1 2 x", path + ":4:7: error: cannot read '" + path +
+                        "': face corner 'x': 'x' is not a vertex number (1, 2, … or -1, -2, …)"},
+    };
+    for (const auto& [line, expected] : cases) {
+        write("mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + line + "\n");
+        CommandRun run = cli("check mesh.toml");
+        EXPECT_EQ(run.status, 1) << line;
+        EXPECT_EQ(run.output, expected + " (objects[1].file at mesh.toml:28:8)\n") << line;
+    }
+    write("mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n");
+    EXPECT_EQ(cli("check mesh.toml").status, 0);
+}
+
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
     const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);

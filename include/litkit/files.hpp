@@ -3,6 +3,7 @@
 // special files, signals and full disks.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -36,6 +37,18 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 // Throws IoError (Access::Write).
 void write_folder_atomically(const std::filesystem::path& directory,
                              const std::vector<std::pair<std::string, std::string>>& files);
+
+// The largest scene or mesh file litkit reads (docs/reliability.md): 256 MiB.
+// Past it a file is refused with its name, before more is read, so that
+// /dev/zero or a runaway pipe cannot exhaust memory.
+inline constexpr std::uint64_t max_input_file_bytes = std::uint64_t{256} << 20;
+
+// Reads the whole of `path` (a regular file, a FIFO, a device, "/dev/fd/N"
+// from process substitution; "-" reads standard input), at most `limit`
+// bytes. Throws IoError (Access::Read) naming the file when it cannot be
+// read or is larger than `limit`.
+std::string read_file_limited(const std::filesystem::path& path,
+                              std::uint64_t limit = max_input_file_bytes);
 
 // Writes all of `bytes` to the open descriptor `fd` (retrying short writes
 // and EINTR). Throws IoError (Access::Write) naming `name`.

@@ -65,6 +65,42 @@ std::string temporary_name() {
 
 }  // namespace
 
+std::string read_file_limited(const std::filesystem::path& path, std::uint64_t limit) {
+    const bool standard_input = path == "-";
+    const std::string name = standard_input ? std::string("-") : path.string();
+    auto fail = [&](const std::string& reason) { throw IoError(name, reason); };
+    const std::string too_large = "larger than the limit of " + std::to_string(limit >> 20) +
+                                  " MiB for scene and mesh files (docs/reliability.md)";
+    const int fd = standard_input ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) fail(errno_text(errno));
+    struct Closer {
+        int fd;
+        bool owned;
+        ~Closer() {
+            if (owned) ::close(fd);
+        }
+    } closer{fd, !standard_input};
+    struct stat status;
+    if (::fstat(fd, &status) != 0) fail(errno_text(errno));
+    if (S_ISDIR(status.st_mode)) fail(errno_text(EISDIR));
+    // A regular file says its size: refuse at once, read nothing.
+    if (S_ISREG(status.st_mode) && static_cast<std::uint64_t>(status.st_size) > limit) fail(too_large);
+    std::string bytes;
+    if (S_ISREG(status.st_mode)) bytes.reserve(static_cast<std::size_t>(status.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            fail(errno_text(errno));
+        }
+        if (n == 0) break;
+        if (bytes.size() + static_cast<std::size_t>(n) > limit) fail(too_large);
+        bytes.append(buffer, static_cast<std::size_t>(n));
+    }
+    return bytes;
+}
+
 void write_all(int fd, std::string_view bytes, const std::string& name) {
     for (std::size_t written = 0; written < bytes.size();) {
         const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);

@@ -6,7 +6,9 @@
 #include <memory>
 #include <system_error>
 
+#include "litkit/files.hpp"
 #include "litkit/validate.hpp"
+#include "scene/nesting.hpp"
 #include "scene/reader.hpp"
 
 namespace litkit {
@@ -20,6 +22,7 @@ using detail::SceneReader;
 // Parses TOML text; a syntax error or invalid UTF-8 makes the file one that
 // cannot be read (docs/spec.md §6), located where parsing stopped.
 toml::table parse_toml(std::string_view text, const std::string& name) {
+    detail::check_nesting(text, name);  // toml++ recurses once per level
     try {
         return toml::parse(text, std::string_view(name));
     } catch (const toml::parse_error& failure) {
@@ -29,22 +32,7 @@ toml::table parse_toml(std::string_view text, const std::string& name) {
     }
 }
 
-std::string read_bytes(const fs::path& path) {
-    struct Closer {
-        void operator()(std::FILE* file) const { std::fclose(file); }
-    };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-    if (!file) throw IoError(path.string(), std::generic_category().message(errno));
-    std::string bytes;
-    char buffer[1 << 16];
-    std::size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
-        bytes.append(buffer, count);
-    // Reading a directory fails here, with EISDIR.
-    if (std::ferror(file.get())) throw IoError(path.string(), std::generic_category().message(errno));
-    return bytes;
-}
+std::string read_bytes(const fs::path& path) { return read_file_limited(path); }
 
 Scene build_scene(std::span<const ParsedFile> files) {
     Scene scene;

@@ -338,11 +338,16 @@ private:
             } catch (const IoError& failure) {
                 // Point at the scene's `file` key, and keep the line inside
                 // the mesh file where reading stopped.
-                std::string reason = failure.reason();
-                if (failure.location().line > 0)
-                    reason += " (line " + std::to_string(failure.location().line) + ")";
-                throw IoError(failure.path(), reason,
-                              where("objects[" + std::to_string(i) + "].file"));
+                const FileLoc scene_place = where("objects[" + std::to_string(i) + "].file");
+                if (failure.location().line > 0) {
+                    // "mesh.obj:6:3: error: …": the place in the mesh file
+                    // first, where an editor jumps; the scene's key after.
+                    throw IoError(failure.path(),
+                                  failure.reason() + " (objects[" + std::to_string(i) +
+                                      "].file at " + scene_place.to_string() + ")",
+                                  failure.location());
+                }
+                throw IoError(failure.path(), failure.reason(), scene_place);
             }
             const glm::mat4 model = object_to_world(object);
             std::vector<glm::vec3>& hull = hulls_[i].emplace();
