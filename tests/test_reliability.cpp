@@ -547,6 +547,60 @@ TEST_F(Reliability, FaceIndicesOutOfRangeAreLocatedErrors) {
     EXPECT_EQ(cli("check mesh.toml").status, 0);
 }
 
+// ---- B7: messages tell the truth, one problem per line ----
+
+// small_scene with lines added at the end of [observer] (from line 10) and
+// to the sphere (from line 26).
+std::string scene_with(const std::string& observer_extra, const std::string& sphere_extra) {
+    std::string scene = small_scene;
+    scene.insert(scene.find("[lighting]"), observer_extra);
+    return scene + sphere_extra;
+}
+
+TEST_F(Reliability, AScaleTooSmallForAFloatIsReportedAsWritten) {
+    write("tiny.toml", scene_with("", "scale = 1e-50\n"));
+    CommandRun run = cli("check tiny.toml");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.output, "tiny.toml:26:9: error: objects[0]: scale 1e-50 is too small (closest to "
+                          "0 a scene holds: 1.401298464324817e-45; write 0 for zero)\n");
+}
+
+TEST_F(Reliability, FarAndNearAreComparedAsWritten) {
+    write("same.toml", scene_with("near = 5\nfar = 5.0000001\n\n", ""));
+    CommandRun same = cli("check same.toml");
+    EXPECT_EQ(same.status, 2);
+    EXPECT_EQ(same.output, "same.toml:11:7: error: observer: far (5.0000001) and near (5) are the "
+                           "same 32-bit float (5); make far greater than near by more than that "
+                           "precision\n");
+    write("below.toml", scene_with("near = 5\nfar = 4.9999999\n\n", ""));
+    CommandRun below = cli("check below.toml");
+    EXPECT_EQ(below.status, 2);
+    EXPECT_EQ(below.output, "below.toml:11:7: error: observer: far (4.9999999) must be greater than "
+                            "near (5)\n");
+    write("apart.toml", scene_with("near = 5\nfar = 5.001\n\n", ""));
+    CommandRun apart = cli("check apart.toml");
+    EXPECT_EQ(apart.status, 0) << apart.output;
+    EXPECT_EQ(apart.output.find("far"), std::string::npos) << apart.output;
+}
+
+TEST_F(Reliability, ControlCharactersInNamesAndPathsAreEscaped) {
+    // A name that would otherwise print a second, forged diagnostic line.
+    const std::string forged = "name = \"x\\nforged.toml:1:1: error: forged\\u0007\"\n";
+    std::string scene = small_scene;
+    scene.insert(scene.find("[[objects]]"), forged);  // the light
+    write("names.toml", scene + forged);             // and the sphere: a duplicate
+    CommandRun run = cli("check names.toml");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.output, "names.toml:27:8: error: objects[0]: name 'x\\nforged.toml:1:1: error: "
+                          "forged\\x07' is already used by lights[0]\n");
+    write("path.toml", std::string(small_scene) +
+                           "[[objects]]\ntype = \"mesh\"\nfile = \"no\\nsuch.obj\"\nposition = [3, 0, 0]\n");
+    CommandRun path = cli("check path.toml");
+    EXPECT_EQ(path.status, 1);
+    EXPECT_EQ(path.output, "path.toml:28:8: error: cannot read 'no\\nsuch.obj': No such file or "
+                           "directory\n");
+}
+
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
     const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);
