@@ -601,6 +601,54 @@ TEST_F(Reliability, ControlCharactersInNamesAndPathsAreEscaped) {
                            "directory\n");
 }
 
+// ---- C9: the hashed duplicate check and the broad phase find what the
+// pairwise loops found (their speed is measured by bench/check-scale.sh) ----
+
+TEST_F(Reliability, EveryLightAtAnEarlierLightsPlaceIsReported) {
+    std::string scene = small_scene;
+    for (int i = 0; i < 3; ++i)  // lights[1..3] at one place; -0 is the same place as 0
+        scene += std::string("[[lights]]\ntype = \"point\"\nposition = [") +
+                 (i == 1 ? "-0" : "0") + ", 3, -3]\nintensity = 1\n";
+    write("lights.toml", scene);
+    CommandRun run = cli("check lights.toml");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.output,
+              "lights.toml:32:12: error: lights[2]: position [0, 3, -3] is also the position of "
+              "lights[1]\n"
+              "lights.toml:36:12: error: lights[3]: position [0, 3, -3] is also the position of "
+              "lights[1]\n"
+              "lights.toml:36:12: error: lights[3]: position [0, 3, -3] is also the position of "
+              "lights[2]\n");
+}
+
+TEST_F(Reliability, OverlapsAmongManyObjectsAreAllFoundInOrder) {
+    std::string scene = small_scene;
+    scene.replace(scene.find("width = 10"), 10, "width = 400");
+    // 200 spheres in a row, 2 apart (touching none), and two that overlap
+    // objects 50 and 120 (placed at x = -199 + 2i).
+    for (int i = 0; i < 200; ++i)
+        scene += "[[objects]]\ntype = \"sphere\"\nradius = 0.5\nsegments = 8\nrings = 4\n"
+                 "position = [" + std::to_string(-199 + 2 * i) + ", 0, -2]\n";
+    for (const int x : {-199 + 2 * 120, -199 + 2 * 50})
+        scene += "[[objects]]\ntype = \"cube\"\nsize = 0.5\nposition = [" +
+                 std::to_string(x) + ".25, 0, -2]\n";
+    write("many.toml", scene);
+    CommandRun run = cli("check many.toml");
+    EXPECT_EQ(run.status, 2);
+    // objects[201] (x = 41.25) overlaps objects[121] (x = 41); objects[202]
+    // (x = -98.75) overlaps objects[51] (x = -99).
+    EXPECT_NE(run.output.find("error: objects[201]: overlaps objects[121]\n"), std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("error: objects[202]: overlaps objects[51]\n"), std::string::npos)
+        << run.output;
+    std::size_t errors = 0;  // (most spheres are outside the view: warnings)
+    for (std::size_t at = run.output.find("error:"); at != std::string::npos;
+         at = run.output.find("error:", at + 1))
+        ++errors;
+    EXPECT_EQ(errors, 2u) << run.output;
+    EXPECT_EQ(run.output.find("objects[0]: overlaps"), std::string::npos) << run.output;
+}
+
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
     const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);

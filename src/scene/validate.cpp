@@ -3,6 +3,7 @@
 // located at the offending value.
 #include "litkit/validate.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
@@ -10,7 +11,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <unordered_map>
 #include <optional>
 #include <string>
 
@@ -55,6 +58,66 @@ std::string object_label(const SceneObject& object, std::size_t index) {
 std::string light_label(const SceneLight& light, std::size_t index) {
     return light.name.empty() ? "lights[" + std::to_string(index) + "]"
                               : "light '" + light.name + "'";
+}
+
+// A position as a hash key: equal positions (== on each coordinate, so 0 and
+// -0 are one) give equal keys.
+std::string position_key(const glm::vec3& p) {
+    std::string key(sizeof(float) * 3, '\0');
+    const float coordinates[3] = {p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};  // -0 + 0 is +0
+    std::memcpy(key.data(), coordinates, sizeof coordinates);
+    return key;
+}
+
+// An axis-aligned bounding box: the broad phase of the overlap and
+// containment tests (two hulls can only meet where their boxes do).
+struct Box {
+    glm::vec3 low{0.0f};
+    glm::vec3 high{0.0f};
+    bool empty = true;
+    bool overlaps(const Box& other) const {
+        return !empty && !other.empty && low.x <= other.high.x && other.low.x <= high.x &&
+               low.y <= other.high.y && other.low.y <= high.y && low.z <= other.high.z &&
+               other.low.z <= high.z;
+    }
+    bool contains(const glm::vec3& p) const {
+        return !empty && p.x >= low.x && p.x <= high.x && p.y >= low.y && p.y <= high.y &&
+               p.z >= low.z && p.z <= high.z;
+    }
+};
+
+Box box_of(const std::vector<glm::vec3>& points) {
+    Box box;
+    if (points.empty()) return box;
+    box.empty = false;
+    box.low = box.high = points.front();
+    for (const glm::vec3& p : points) {
+        box.low = glm::min(box.low, p);
+        box.high = glm::max(box.high, p);
+    }
+    return box;
+}
+
+// For each object, the earlier objects whose boxes meet its box, in
+// increasing order: sort and sweep along x, then test y and z.
+std::vector<std::vector<std::size_t>> overlapping_boxes(const std::vector<Box>& boxes) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        if (!boxes[i].empty) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return boxes[a].low.x < boxes[b].low.x; });
+    std::vector<std::vector<std::size_t>> candidates(boxes.size());
+    std::vector<std::size_t> active;  // boxes whose x interval may still meet the next one
+    for (const std::size_t i : order) {
+        std::erase_if(active, [&](std::size_t j) { return boxes[j].high.x < boxes[i].low.x; });
+        for (const std::size_t j : active) {
+            if (!boxes[i].overlaps(boxes[j])) continue;
+            candidates[std::max(i, j)].push_back(std::min(i, j));
+        }
+        active.push_back(i);
+    }
+    for (std::vector<std::size_t>& list : candidates) std::sort(list.begin(), list.end());
+    return candidates;
 }
 
 const glm::vec3* light_position(const Light& light) {
@@ -236,14 +299,14 @@ private:
             if (observer_position_ok_ && *position == scene_.observer.position)
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is the observer's position");
-            for (std::size_t other = 0; other < index; ++other) {
-                const glm::vec3* earlier = light_position(scene_.lights[other].light);
-                if (earlier && usable("lights[" + std::to_string(other) + "]") &&
-                    *earlier == *position)
-                    error(base + ".position", who,
-                          "position " + vector_text(*position) + " is also the position of " +
-                              light_label(scene_.lights[other], other));
-            }
+            // Earlier lights at the same place, found by hashing (a loop over
+            // every earlier light made 100,000 lights take minutes).
+            std::vector<std::size_t>& same_place = light_positions_[position_key(*position)];
+            for (const std::size_t other : same_place)
+                error(base + ".position", who,
+                      "position " + vector_text(*position) + " is also the position of " +
+                          light_label(scene_.lights[other], other));
+            same_place.push_back(index);
         }
     }
 
@@ -363,6 +426,10 @@ private:
 
     void check_geometry() {
         build_hulls();
+        boxes_.assign(hulls_.size(), Box{});
+        for (std::size_t i = 0; i < hulls_.size(); ++i)
+            if (hulls_[i]) boxes_[i] = box_of(*hulls_[i]);
+        const std::vector<std::vector<std::size_t>> candidates = overlapping_boxes(boxes_);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             if (!hulls_[i]) continue;
             const std::string base = "objects[" + std::to_string(i) + "]";
@@ -377,8 +444,8 @@ private:
                     }
                 }
             }
-            for (std::size_t j = 0; j < i; ++j) {
-                if (hulls_[j] && hulls_intersect(*hulls_[i], *hulls_[j]))
+            for (const std::size_t j : candidates[i]) {
+                if (hulls_intersect(*hulls_[i], *hulls_[j]))
                     error(base + ".position", who,
                           "overlaps " + object_label(scene_.objects[j], j));
             }
@@ -393,7 +460,8 @@ private:
             const glm::vec3* position = light_position(scene_.lights[l].light);
             if (!position || !usable("lights[" + std::to_string(l) + "]")) continue;
             for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-                if (hulls_[i] && hull_contains(*hulls_[i], *position))
+                if (hulls_[i] && boxes_[i].contains(*position) &&
+                    hull_contains(*hulls_[i], *position))
                     error("lights[" + std::to_string(l) + "].position",
                           subject("lights", l, scene_.lights[l].name),
                           "position " + vector_text(*position) + " is inside " +
@@ -455,6 +523,8 @@ private:
     bool observer_position_ok_ = true;  // the position alone is usable
     std::vector<bool> shape_ok_;
     std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
+    std::vector<Box> boxes_;  // each hull's bounding box (empty: no hull)
+    std::unordered_map<std::string, std::vector<std::size_t>> light_positions_;
 };
 
 }  // namespace
