@@ -649,6 +649,72 @@ TEST_F(Reliability, OverlapsAmongManyObjectsAreAllFoundInOrder) {
     EXPECT_EQ(run.output.find("objects[0]: overlaps"), std::string::npos) << run.output;
 }
 
+// ---- C10: a scene-wide triangle budget, and no bad_alloc text ----
+
+std::string eight_tori() {
+    std::string scene = small_scene;
+    scene.resize(scene.find("[[objects]]"));
+    for (int i = 0; i < 8; ++i)
+        scene += "[[objects]]\nname = \"ring" + std::to_string(i) +
+                 "\"\ntype = \"torus\"\nmajor_radius = 0.3\nminor_radius = 0.05\nsegments = "
+                 "4096\nsides = 4096\nposition = [" +
+                 std::to_string(i - 4) + ".5, 0, -2]\n";
+    return scene;
+}
+
+TEST_F(Reliability, EightToriAtTheMaximumTessellationAreRefusedBeforeAnythingIsBuilt) {
+    write("tori.toml", eight_tori());
+    // 8 × 2 × 4096 × 4096 = 268,435,456 triangles; located at the largest
+    // (the first of equals), objects[0]'s table on line 23.
+    const std::string expected =
+        "tori.toml:23:1: error: objects[0] 'ring0': the objects need 268,435,456 triangles "
+        "together, more than the budget of 64,000,000 (object 'ring0' 33,554,432, object 'ring1' "
+        "33,554,432, object 'ring2' 33,554,432, object 'ring3' 33,554,432, object 'ring4' "
+        "33,554,432 and 3 more); lower their tessellation, or raise the budget with "
+        "--max-triangles (docs/reliability.md)\n";
+    for (const char* command : {"check tori.toml", "render tori.toml -o tori.png"}) {
+        // Memory limited to 1 GiB: building anything would fail. (Not under
+        // ASan, which reserves more address space than that to start.)
+#if defined(__SANITIZE_ADDRESS__)
+        const std::string limit;
+#else
+        const std::string limit = "ulimit -v 1048576 && ";
+#endif
+        CommandRun run = shell(limit + "'" LITKIT_CLI "' " + command);
+        EXPECT_EQ(run.status, 2) << command;
+        EXPECT_EQ(run.output, expected) << command;
+    }
+    EXPECT_FALSE(fs::exists(dir / "tori.png"));
+}
+
+TEST_F(Reliability, MaxTrianglesSetsTheBudget) {
+    // The sphere of small_scene: 2 × 64 × 31 = 3,968 triangles.
+    CommandRun low = cli("check scene.toml --max-triangles 3967");
+    EXPECT_EQ(low.status, 2);
+    EXPECT_NE(low.output.find("error: objects[0]: the objects need 3,968 triangles together, "
+                              "more than the budget of 3,967 (objects[0] 3,968)"),
+              std::string::npos)
+        << low.output;
+    EXPECT_EQ(cli("check scene.toml --max-triangles 3968").status, 0);
+    CommandRun render = cli("render scene.toml --max-triangles 3967 -o out.png");
+    EXPECT_EQ(render.status, 2) << render.output;
+}
+
+TEST_F(Reliability, RunningOutOfMemorySaysWhatWasBeingBuilt) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "ASan reserves more address space than ulimit -v allows";
+#else
+    write("tori.toml", eight_tori());
+    CommandRun run = shell("ulimit -v 1048576 && '" LITKIT_CLI
+                           "' render tori.toml --max-triangles 1000000000 -o tori.png");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_EQ(run.output, "error: out of memory while building the meshes or rendering; lower the "
+                          "objects' tessellation, the image size or --max-triangles "
+                          "(docs/reliability.md)\n");
+    EXPECT_FALSE(fs::exists(dir / "tori.png"));
+#endif
+}
+
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
     const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);

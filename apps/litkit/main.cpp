@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -85,6 +87,7 @@ struct SceneArguments {
     std::optional<std::string> shading;
     std::optional<int> threads;  // CPU backend only; none: one per core
     std::string backend = "cpu";
+    std::uint64_t max_triangles = litkit::default_triangle_budget;  // docs/reliability.md
 };
 
 struct RenderArguments {
@@ -154,6 +157,10 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->check(CLI::IsMember(reflections));
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+    command->add_option("--max-triangles", arguments.max_triangles,
+                        "The scene-wide triangle budget (docs/reliability.md)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     if (!rendering) return;
     command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, 1024));
@@ -208,10 +215,11 @@ void print_diagnostics(const std::vector<litkit::Diagnostic>& diagnostics) {
 }
 
 // Loads the scene (or the built-in default) and shows its warnings.
-litkit::Scene load(const std::vector<std::string>& files) {
+litkit::Scene load(const std::vector<std::string>& files,
+                   std::uint64_t max_triangles = litkit::default_triangle_budget) {
     if (files.empty()) return litkit::default_scene();
     std::vector<fs::path> paths(files.begin(), files.end());
-    litkit::Scene scene = litkit::load_scene(paths);
+    litkit::Scene scene = litkit::load_scene(paths, {.max_triangles = max_triangles});
     print_diagnostics(scene.warnings);
     return scene;
 }
@@ -270,7 +278,7 @@ litkit::Scene load(const SceneArguments& arguments) {
         throw UsageError{"--threads applies to the CPU backend; with --backend gl the driver "
                          "chooses (for Mesa's llvmpipe, set LP_NUM_THREADS)"};
     }
-    litkit::Scene scene = load(arguments.scenes);
+    litkit::Scene scene = load(arguments.scenes, arguments.max_triangles);
     if (arguments.width) scene.output.width = *arguments.width;
     if (arguments.height) scene.output.height = *arguments.height;
     if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
@@ -306,8 +314,8 @@ int run_render(const RenderArguments& arguments) {
     return exit_success;
 }
 
-int run_check(const std::vector<std::string>& scenes) {
-    load(scenes);
+int run_check(const std::vector<std::string>& scenes, std::uint64_t max_triangles) {
+    load(scenes, max_triangles);
     std::cout << "ok\n";
     return exit_success;
 }
@@ -621,6 +629,11 @@ int main(int argc, char** argv) {
     std::vector<std::string> check_scenes;
     CLI::App* check = app.add_subcommand("check", "Validate scene files without rendering");
     check->add_option("SCENE", check_scenes, "Scene files (TOML), merged in order")->required();
+    std::uint64_t check_max_triangles = litkit::default_triangle_budget;
+    check->add_option("--max-triangles", check_max_triangles,
+                      "The scene-wide triangle budget (docs/reliability.md)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 
     std::string init_file;
     bool init_force = false;
@@ -730,7 +743,7 @@ int main(int argc, char** argv) {
     if (!view->parsed()) install_signal_handlers();
     try {
         if (render->parsed()) return run_render(render_arguments);
-        if (check->parsed()) return run_check(check_scenes);
+        if (check->parsed()) return run_check(check_scenes, check_max_triangles);
         if (init->parsed()) return run_init(init_file, init_force);
         if (bench->parsed()) return run_bench(bench_arguments);
         if (export_command->parsed()) return run_export(export_arguments);
@@ -752,6 +765,15 @@ int main(int argc, char** argv) {
     } catch (const UsageError& error) {
         std::cerr << "error: " << error.message << "\n";
         return exit_invalid;
+    } catch (const std::bad_alloc&) {
+        // Never "std::bad_alloc": what ran out, and what to do about it.
+        std::cerr << "error: out of memory while " << (render->parsed() || compare->parsed() ||
+                                                           turntable->parsed() || bench->parsed()
+                                                       ? "building the meshes or rendering"
+                                                       : "reading or checking the scene")
+                  << "; lower the objects' tessellation, the image size or --max-triangles "
+                     "(docs/reliability.md)\n";
+        return exit_io;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";
         return exit_io;

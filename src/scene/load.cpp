@@ -34,7 +34,8 @@ toml::table parse_toml(std::string_view text, const std::string& name) {
 
 std::string read_bytes(const fs::path& path) { return read_file_limited(path); }
 
-Scene build_scene(std::span<const ParsedFile> files) {
+Scene build_scene(std::span<const ParsedFile> files,
+                  std::uint64_t triangle_budget = default_triangle_budget) {
     Scene scene;
     SceneReader reader(scene);
     for (const ParsedFile& file : files) reader.read_file(file);
@@ -44,7 +45,7 @@ Scene build_scene(std::span<const ParsedFile> files) {
     // The value and geometry rules (validate.hpp) run too, so that one run
     // reports every problem; entities with shape errors hold defaults in
     // place of their bad values and are left out of the geometric checks.
-    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities())) {
+    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities(), triangle_budget)) {
         if (diagnostic.severity == Severity::Warning)
             scene.warnings.push_back(std::move(diagnostic));
         else
@@ -57,7 +58,9 @@ Scene build_scene(std::span<const ParsedFile> files) {
 
 }  // namespace
 
-Scene load_scene(std::span<const std::filesystem::path> files) {
+Scene load_scene(std::span<const std::filesystem::path> files) { return load_scene(files, {}); }
+
+Scene load_scene(std::span<const std::filesystem::path> files, const LoadOptions& options) {
     std::vector<ParsedFile> parsed;
     parsed.reserve(files.size());
     for (const fs::path& path : files) {
@@ -65,7 +68,7 @@ Scene load_scene(std::span<const std::filesystem::path> files) {
         toml::table root = parse_toml(read_bytes(path), name);
         parsed.push_back(ParsedFile{std::move(name), path.parent_path(), std::move(root)});
     }
-    return build_scene(parsed);
+    return build_scene(parsed, options.max_triangles);
 }
 
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name) {

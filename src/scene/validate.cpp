@@ -120,6 +120,14 @@ std::vector<std::vector<std::size_t>> overlapping_boxes(const std::vector<Box>& 
     return candidates;
 }
 
+// 268435456 → "268,435,456".
+std::string grouped(std::uint64_t value) {
+    std::string digits = std::to_string(value);
+    for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
+        digits.insert(static_cast<std::size_t>(at), ",");
+    return digits;
+}
+
 const glm::vec3* light_position(const Light& light) {
     if (const auto* point = std::get_if<PointLight>(&light.kind)) return &point->position;
     if (const auto* spot = std::get_if<SpotLight>(&light.kind)) return &spot->position;
@@ -128,7 +136,8 @@ const glm::vec3* light_position(const Light& light) {
 
 class Validator {
 public:
-    Validator(const Scene& scene, const BrokenEntities& broken) : scene_(scene), broken_(broken) {}
+    Validator(const Scene& scene, const BrokenEntities& broken, std::uint64_t triangle_budget)
+        : scene_(scene), broken_(broken), triangle_budget_(triangle_budget) {}
 
     std::vector<Diagnostic> run() {
         check_room();
@@ -137,7 +146,9 @@ public:
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
         check_names();
-        check_geometry();
+        // Over the budget, no mesh is built: the geometric checks would
+        // allocate what the budget exists to refuse.
+        if (within_triangle_budget()) check_geometry();
         check_warnings();
         return std::move(diagnostics_);
     }
@@ -424,6 +435,38 @@ private:
         }
     }
 
+    // docs/reliability.md: the objects' triangles together, from their
+    // parameters, against the budget; the error names the largest objects.
+    bool within_triangle_budget() {
+        std::uint64_t total = 0;
+        std::vector<std::pair<std::uint64_t, std::size_t>> sizes;  // triangles, object
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            if (!shape_ok_[i]) continue;
+            const std::uint64_t triangles = triangles_of(scene_.objects[i].shape);
+            total += triangles;
+            sizes.emplace_back(triangles, i);
+        }
+        if (total <= triangle_budget_) return true;
+        std::stable_sort(sizes.begin(), sizes.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::string largest;
+        const std::size_t named = std::min<std::size_t>(sizes.size(), 5);
+        for (std::size_t k = 0; k < named; ++k) {
+            if (k) largest += ", ";
+            largest += object_label(scene_.objects[sizes[k].second], sizes[k].second) + " " +
+                       grouped(sizes[k].first);
+        }
+        if (sizes.size() > named) largest += " and " + std::to_string(sizes.size() - named) + " more";
+        const std::size_t biggest = sizes.front().second;
+        error("objects[" + std::to_string(biggest) + "]",
+              subject("objects", biggest, scene_.objects[biggest].name),
+              "the objects need " + grouped(total) + " triangles together, more than the budget of " +
+                  grouped(triangle_budget_) + " (" + largest +
+                  "); lower their tessellation, or raise the budget with --max-triangles "
+                  "(docs/reliability.md)");
+        return false;
+    }
+
     void check_geometry() {
         build_hulls();
         boxes_.assign(hulls_.size(), Box{});
@@ -517,6 +560,7 @@ private:
 
     const Scene& scene_;
     const BrokenEntities& broken_;
+    std::uint64_t triangle_budget_;
     std::vector<Diagnostic> diagnostics_;
     bool room_ok_ = true;
     bool observer_ok_ = true;           // the whole view is usable
@@ -529,10 +573,35 @@ private:
 
 }  // namespace
 
-std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken) {
-    return Validator(scene, broken).run();
+std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken,
+                                      std::uint64_t triangle_budget) {
+    return Validator(scene, broken, triangle_budget).run();
 }
 
 std::vector<Diagnostic> validate_scene(const Scene& scene) { return validate_scene(scene, {}); }
+
+std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangle_budget) {
+    return validate_scene(scene, {}, triangle_budget);
+}
+
+std::uint64_t triangles_of(const Shape& shape) {
+    struct Count {
+        std::uint64_t operator()(const CubeShape&) const { return 12; }
+        std::uint64_t operator()(const SphereShape& s) const {  // make_sphere's reserve
+            return 2 * static_cast<std::uint64_t>(std::max(s.segments, 0)) *
+                   static_cast<std::uint64_t>(std::max(s.rings - 1, 0));
+        }
+        std::uint64_t operator()(const TorusShape& t) const {
+            return 2 * static_cast<std::uint64_t>(std::max(t.segments, 0)) *
+                   static_cast<std::uint64_t>(std::max(t.sides, 0));
+        }
+        std::uint64_t operator()(const TeapotShape& t) const {  // 32 patches, s² quads each
+            const auto s = static_cast<std::uint64_t>(std::max(t.subdivisions, 0));
+            return 32 * 2 * s * s;
+        }
+        std::uint64_t operator()(const MeshFileShape&) const { return 0; }
+    };
+    return std::visit(Count{}, shape);
+}
 
 }  // namespace litkit

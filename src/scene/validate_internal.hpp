@@ -17,6 +17,7 @@ namespace litkit {
 // whole (a missing or misspelt table), which leaves out all geometry.
 using BrokenEntities = std::set<std::string, std::less<>>;
 
-std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken);
+std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken,
+                                      std::uint64_t triangle_budget = default_triangle_budget);
 
 }  // namespace litkit
