@@ -715,6 +715,38 @@ TEST_F(Reliability, RunningOutOfMemorySaysWhatWasBeingBuilt) {
 #endif
 }
 
+// ---- D11: the exported program fails fast without a display, and follows
+// litkit's rules for its output ----
+
+TEST_F(Reliability, TheExportedProgramRefusesToReplaceAndNeedsADisplayForAWindow) {
+    ASSERT_EQ(cli("export --format cpp scene.toml -o program").status, 0);
+    const CommandRun configure = shell("'" LITKIT_CMAKE "' -S program -B program/build");
+    ASSERT_EQ(configure.status, 0) << configure.output;
+    ASSERT_EQ(configure.output.find("SDL2 not found"), std::string::npos) << configure.output;
+    const CommandRun build = shell("'" LITKIT_CMAKE "' --build program/build");
+    ASSERT_EQ(build.status, 0) << build.output;
+
+    const auto start = std::chrono::steady_clock::now();
+    const CommandRun window =
+        shell("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER program/build/scene --window");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(window.status, 1) << window.output;
+    EXPECT_EQ(window.output, "scene: error: no display to open a window on (DISPLAY and "
+                             "WAYLAND_DISPLAY are not set); run without --window to write a PNG\n");
+    EXPECT_LT(seconds, 5.0);  // it used to wait forever
+
+    write("scene.png", "old picture");
+    const CommandRun refused = shell("program/build/scene");
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_EQ(refused.output, "scene: error: 'scene.png' already exists; pass --force to replace it\n");
+    EXPECT_EQ(read("scene.png"), "old picture");
+    const CommandRun forced = shell("program/build/scene --force");
+    EXPECT_EQ(forced.status, 0) << forced.output;
+    EXPECT_EQ(litkit::read_png(dir / "scene.png").width, 64);
+    EXPECT_FALSE(fs::exists(dir / "scene.png.tmp"));
+}
+
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
     const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);
