@@ -601,6 +601,50 @@ TEST_F(Reliability, ControlCharactersInNamesAndPathsAreEscaped) {
                            "directory\n");
 }
 
+// ---- B8: directions and the view at any scale ----
+
+std::string lights_with_direction(const std::string& length) {
+    std::string scene = small_scene;
+    scene.resize(scene.find("[[lights]]"));
+    return scene + "[[lights]]\ntype = \"directional\"\ndirection = [" + length + ", -" + length +
+           ", -" + length + "]\n[[lights]]\ntype = \"spot\"\nposition = [0, 3, 3]\ndirection = [0, -" +
+           length + ", -" + length + "]\ncutoff = 40\nintensity = 5\n[[objects]]\ntype = "
+           "\"sphere\"\nradius = 1\n";
+}
+
+TEST_F(Reliability, TinyAndHugeDirectionsDrawWhatUnitDirectionsDraw) {
+    write("unit.toml", lights_with_direction("1"));
+    write("tiny.toml", lights_with_direction("1e-30"));  // squared: 0 as a float
+    write("huge.toml", lights_with_direction("1e30"));   // squared: infinite as a float
+    for (const char* name : {"unit", "tiny", "huge"}) {
+        const CommandRun run = cli(std::string("render ") + name + ".toml -o " + name + ".png");
+        ASSERT_EQ(run.status, 0) << run.output;
+    }
+    const litkit::Image unit = litkit::read_png(dir / "unit.png");
+    EXPECT_EQ(litkit::read_png(dir / "tiny.png").rgb, unit.rgb);
+    EXPECT_EQ(litkit::read_png(dir / "huge.png").rgb, unit.rgb);
+}
+
+TEST_F(Reliability, AViewOfLength4e19IsNotCalledParallelToUp) {
+    // small_scene scaled by 1e19: the view's squared length overflows a float.
+    write("big.toml", "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
+                      "position = [0, 0, 4e19]\n[lighting]\nreflection = \"phong\"\nshading = "
+                      "\"phong\"\n[[lights]]\ntype = \"directional\"\ndirection = [1, -1, -1]\n"
+                      "[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
+    const CommandRun run = cli("check big.toml");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(run.output, "ok\n");
+    // And a truly parallel up is still refused at that scale.
+    write("parallel.toml", "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
+                           "position = [0, 0, 4e19]\nup = [0, 0, 1e-30]\n[lighting]\nreflection = "
+                           "\"phong\"\nshading = \"phong\"\n[[lights]]\ntype = \"directional\"\n"
+                           "direction = [1, -1, -1]\n[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
+    const CommandRun parallel = cli("check parallel.toml");
+    EXPECT_EQ(parallel.status, 2);
+    EXPECT_EQ(parallel.output, "parallel.toml:7:6: error: observer: up [0, 0, 1e-30] is parallel to "
+                               "the view direction [0, 0, -4e+19]\n");
+}
+
 // ---- C9: the hashed duplicate check and the broad phase find what the
 // pairwise loops found (their speed is measured by bench/check-scale.sh) ----
 

@@ -1,7 +1,13 @@
 // Scene files (docs/spec.md §5): reading them, parsing TOML, merging several files
 // into one Scene, and validating it (docs/spec.md §6). Problems are collected, never
 // thrown one at a time, so that a run reports all of them.
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <system_error>
@@ -34,6 +40,30 @@ toml::table parse_toml(std::string_view text, const std::string& name) {
 
 std::string read_bytes(const fs::path& path) { return read_file_limited(path); }
 
+// A direction whose squared length is not a normal float (1e-30 squared is
+// 0 in float, 1e20 squared is infinite) would normalise to NaN wherever the
+// renderers normalise it: such directions are made unit length here, in
+// double. Every other direction is left exactly as written.
+glm::vec3 unit_if_needed(const glm::vec3& direction) {
+    const float squared = glm::dot(direction, direction);
+    if (squared >= std::numeric_limits<float>::min() && squared <= std::numeric_limits<float>::max())
+        return direction;
+    const glm::dvec3 d(direction);
+    const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    if (largest == 0.0) return direction;  // the zero vector: refused by validation
+    return glm::vec3(glm::normalize(d / largest));
+}
+
+void normalise_tiny_and_huge_directions(Scene& scene) {
+    for (SceneLight& light : scene.lights) {
+        if (auto* directional = std::get_if<DirectionalLight>(&light.light.kind))
+            directional->direction = unit_if_needed(directional->direction);
+        if (auto* spot = std::get_if<SpotLight>(&light.light.kind))
+            spot->direction = unit_if_needed(spot->direction);
+    }
+    scene.observer.up = unit_if_needed(scene.observer.up);
+}
+
 Scene build_scene(std::span<const ParsedFile> files,
                   std::uint64_t triangle_budget = default_triangle_budget) {
     Scene scene;
@@ -53,6 +83,7 @@ Scene build_scene(std::span<const ParsedFile> files,
     }
     // A failed load still carries its warnings, for the caller to show.
     if (!diagnostics.empty()) throw SceneError(std::move(diagnostics), std::move(scene.warnings));
+    normalise_tiny_and_huge_directions(scene);
     return scene;
 }
 

@@ -120,12 +120,24 @@ std::vector<std::vector<std::size_t>> overlapping_boxes(const std::vector<Box>& 
     return candidates;
 }
 
+// The sine of the angle between two non-zero vectors, in double and free of
+// scale: a view of length 4e19 (whose square overflows a float) or an up of
+// length 1e-30 (whose square underflows) gives the same answer as at 1.
+double sine_between(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 unit_a = a / std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    const glm::dvec3 unit_b = b / std::max({std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+    return glm::length(glm::cross(unit_a, unit_b)) / (glm::length(unit_a) * glm::length(unit_b));
+}
+
 // 268435456 → "268,435,456".
 std::string grouped(std::uint64_t value) {
-    std::string digits = std::to_string(value);
-    for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
-        digits.insert(static_cast<std::size_t>(at), ",");
-    return digits;
+    const std::string digits = std::to_string(value);
+    std::string text;
+    for (std::size_t at = 0; at < digits.size(); ++at) {
+        if (at > 0 && (digits.size() - at) % 3 == 0) text += ',';
+        text += digits[at];
+    }
+    return text;
 }
 
 const glm::vec3* light_position(const Light& light) {
@@ -265,7 +277,8 @@ private:
                   "look_at " + vector_text(o.look_at) + " is the observer's own position");
         } else if (o.up == glm::vec3(0.0f)) {
             error("observer.up", "observer", "up must not be the zero vector");
-        } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(o.up))) < 1e-6f) {
+        } else if (sine_between(glm::dvec3(o.look_at) - glm::dvec3(o.position), glm::dvec3(o.up)) <
+                   1e-6) {
             error("observer.up", "observer",
                   "up " + vector_text(o.up) + " is parallel to the view direction " +
                       vector_text(view));
