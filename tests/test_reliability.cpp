@@ -492,6 +492,9 @@ TEST_F(Reliability, AFifoAndStandardInputStillWork) {
     CommandRun render = shell("'" LITKIT_CLI "' render - -o piped.png < scene.toml");
     EXPECT_EQ(render.status, 0) << render.output;
     EXPECT_EQ(litkit::read_png(dir / "piped.png").width, 64);
+    CommandRun named = shell("'" LITKIT_CLI "' render - < scene.toml");
+    EXPECT_EQ(named.status, 0) << named.output;
+    EXPECT_EQ(litkit::read_png(dir / "stdin.png").width, 64);
 }
 
 // ---- B6: OBJ numbers are exact or a located error ----

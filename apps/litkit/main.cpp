@@ -257,6 +257,7 @@ void settle_missing_lighting(litkit::Scene& scene, bool yes) {
 
 fs::path default_output(const std::vector<std::string>& scenes) {
     if (scenes.empty()) return "default.png";
+    if (scenes.front() == "-") return "stdin.png";  // the scene came from standard input
     return fs::path(scenes.front()).filename().replace_extension(".png");
 }
 
