@@ -162,10 +162,16 @@ TEST_F(Reliability, DashWritesThePngToStandardOutputAndMessagesToStandardError) 
     EXPECT_FALSE(fs::exists(dir / "-"));
 }
 
-TEST_F(Reliability, DevStdoutWritesThroughToAPipe) {
-    CommandRun run = cli("render scene.toml -o /dev/stdout 2> stderr.txt | cat > piped.png");
+// /proc/self/fd/1 rather than /dev/stdout: the code before this test would
+// have replaced the machine's own /dev/stdout (tests touch no system device);
+// under /proc it could only fail.
+TEST_F(Reliability, StandardOutputByNameWritesThroughToAPipe) {
+    CommandRun run = cli("render scene.toml -o /proc/self/fd/1 2> stderr.txt | cat > piped.png");
     EXPECT_EQ(run.status, 0) << run.output;
     EXPECT_EQ(litkit::read_png(dir / "piped.png").width, 64);
+    EXPECT_EQ(read("piped.png").find("litkit: wrote"), std::string::npos);
+    EXPECT_NE(read("stderr.txt").find("litkit: wrote /proc/self/fd/1 (64x48"), std::string::npos)
+        << read("stderr.txt");
 }
 
 // ---- A2: names, folders, signals, size limits, full disks ----

@@ -4,6 +4,7 @@
 // 2 invalid input or usage).
 #include <CLI/CLI.hpp>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -66,8 +67,14 @@ void install_signal_handlers() {
 
 // `-o -`: the picture goes to standard output, so every message goes to
 // standard error.
+// Also any name of this process's standard output (/dev/stdout,
+// /proc/self/fd/1, a file that standard output is redirected to).
 bool is_standard_output(const std::filesystem::path& output) {
-    return output == "-" || output == "/dev/stdout";
+    if (output == "-") return true;
+    struct stat named {};
+    struct stat standard {};
+    return ::stat(output.c_str(), &named) == 0 && ::fstat(STDOUT_FILENO, &standard) == 0 &&
+           named.st_dev == standard.st_dev && named.st_ino == standard.st_ino;
 }
 
 void write_png_output(const litkit::Image& image, const std::filesystem::path& output) {
