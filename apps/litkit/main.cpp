@@ -3,15 +3,19 @@
 // status they get (docs/spec.md §6: 0 success, 1 a file could not be read or written,
 // 2 invalid input or usage).
 #include <CLI/CLI.hpp>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,6 +43,50 @@ constexpr int exit_success = 0;
 constexpr int exit_io = 1;
 constexpr int exit_invalid = 2;
 
+// A catchable signal ends the run as it would have, but first removes the
+// temporary files of a write in progress (docs/reliability.md). A file size
+// limit (ulimit -f) makes write() fail with EFBIG instead of killing the
+// process, so that the failed write is reported and cleaned up like a full disk.
+extern "C" void remove_temporaries_and_end(int signal_number) {
+    litkit::remove_registered_temporaries();
+    ::raise(signal_number);  // SA_RESETHAND | SA_NODEFER: the default action, now
+}
+
+void install_signal_handlers() {
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_end;
+    action.sa_flags = SA_RESETHAND | SA_NODEFER;
+    sigemptyset(&action.sa_mask);
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) {
+        struct sigaction previous {};
+        // A signal ignored by whoever started us (nohup) stays ignored.
+        if (::sigaction(signal_number, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN)
+            continue;
+        ::sigaction(signal_number, &action, nullptr);
+    }
+    ::signal(SIGXFSZ, SIG_IGN);
+}
+
+// `-o -`: the picture goes to standard output, so every message goes to
+// standard error.
+// Also any name of this process's standard output (/dev/stdout,
+// /proc/self/fd/1, a file that standard output is redirected to).
+bool is_standard_output(const std::filesystem::path& output) {
+    if (output == "-") return true;
+    struct stat named {};
+    struct stat standard {};
+    return ::stat(output.c_str(), &named) == 0 && ::fstat(STDOUT_FILENO, &standard) == 0 &&
+           named.st_dev == standard.st_dev && named.st_ino == standard.st_ino;
+}
+
+void write_png_output(const litkit::Image& image, const std::filesystem::path& output) {
+    if (is_standard_output(output)) {
+        litkit::write_all(STDOUT_FILENO, litkit::encode_png(image), "standard output");
+    } else {
+        litkit::write_png(image, output);
+    }
+}
+
 // What `render` and `bench` share: the scene and what replaces parts of it.
 struct SceneArguments {
     std::vector<std::string> scenes;
@@ -50,6 +98,7 @@ struct SceneArguments {
     std::optional<float> crease_angle;
     std::optional<int> threads;  // CPU backend only; none: one per core
     std::string backend = "cpu";
+    std::uint64_t max_triangles = litkit::default_triangle_budget;  // docs/reliability.md
 };
 
 struct RenderArguments {
@@ -140,6 +189,10 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember({"flat", "gouraud", "phong", "faceted"}));
     add_normals_options(command, arguments);
+    command->add_option("--max-triangles", arguments.max_triangles,
+                        "The scene-wide triangle budget (docs/reliability.md)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     if (!rendering) return;
     command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, 1024));
@@ -194,10 +247,11 @@ void print_diagnostics(const std::vector<litkit::Diagnostic>& diagnostics) {
 }
 
 // Loads the scene (or the built-in default) and shows its warnings.
-litkit::Scene load(const std::vector<std::string>& files) {
+litkit::Scene load(const std::vector<std::string>& files,
+                   std::uint64_t max_triangles = litkit::default_triangle_budget) {
     if (files.empty()) return litkit::default_scene();
     std::vector<fs::path> paths(files.begin(), files.end());
-    litkit::Scene scene = litkit::load_scene(paths);
+    litkit::Scene scene = litkit::load_scene(paths, {.max_triangles = max_triangles});
     print_diagnostics(scene.warnings);
     return scene;
 }
@@ -235,6 +289,7 @@ void settle_missing_lighting(litkit::Scene& scene, bool yes) {
 
 fs::path default_output(const std::vector<std::string>& scenes) {
     if (scenes.empty()) return "default.png";
+    if (scenes.front() == "-") return "stdin.png";  // the scene came from standard input
     return fs::path(scenes.front()).filename().replace_extension(".png");
 }
 
@@ -256,7 +311,7 @@ litkit::Scene load(const SceneArguments& arguments) {
         throw UsageError{"--threads applies to the CPU backend; with --backend gl the driver "
                          "chooses (for Mesa's llvmpipe, set LP_NUM_THREADS)"};
     }
-    litkit::Scene scene = load(arguments.scenes);
+    litkit::Scene scene = load(arguments.scenes, arguments.max_triangles);
     if (arguments.width) scene.output.width = *arguments.width;
     if (arguments.height) scene.output.height = *arguments.height;
     if (arguments.reflection) scene.reflection = litkit::parse_reflection(*arguments.reflection);
@@ -268,7 +323,7 @@ litkit::Scene load(const SceneArguments& arguments) {
         // normal at each face corner; validating again reports one that
         // lacks it at its line, before any rendering (warnings were shown).
         std::vector<litkit::Diagnostic> errors;
-        for (litkit::Diagnostic& diagnostic : litkit::validate_scene(scene))
+        for (litkit::Diagnostic& diagnostic : litkit::validate_scene(scene, arguments.max_triangles))
             if (diagnostic.severity == litkit::Severity::Error) errors.push_back(std::move(diagnostic));
         if (!errors.empty()) throw litkit::SceneError(std::move(errors));
     }
@@ -293,10 +348,10 @@ int run_render(const RenderArguments& arguments) {
     Backend renderer(scene, arguments.scene);
     litkit::Image image;
     renderer.render_into(image);
-    litkit::write_png(image, output);
+    write_png_output(image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
+    (is_standard_output(output) ? std::cerr : std::cout) << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
               << ", " << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
               << " ms" << (arguments.scene.backend == "gl" ? "; " + renderer.description() : "")
               << ")\n";
@@ -365,7 +420,9 @@ std::string program_name_for(const std::vector<std::string>& scenes) {
 int run_export(const ExportArguments& arguments) {
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
-    const litkit::ExportOptions options{.replace_existing = arguments.force};
+    const litkit::ExportOptions options{
+        .replace_existing = arguments.force,
+        .inputs = {arguments.scene.scenes.begin(), arguments.scene.scenes.end()}};
     const fs::path directory = arguments.directory;
     std::vector<fs::path> written;
     std::string program;
@@ -610,7 +667,7 @@ int main(int argc, char** argv) {
     CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
     add_scene_options(render, render_arguments.scene);
     render->add_option("-o,--output", render_arguments.output,
-                       "Output PNG (default: the first scene's name with .png)");
+                       "Output PNG (default: the first scene's name with .png; -: standard output)");
     render->add_flag("-y,--yes", render_arguments.yes,
                      "Use the default models (phong / phong) where [lighting] leaves one out");
 
@@ -619,6 +676,10 @@ int main(int argc, char** argv) {
     check->add_option("SCENE", check_arguments.scenes, "Scene files (TOML), merged in order")
         ->required();
     add_normals_options(check, check_arguments);
+    check->add_option("--max-triangles", check_arguments.max_triangles,
+                      "The scene-wide triangle budget (docs/reliability.md)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 
     std::string init_file;
     bool init_force = false;
@@ -726,6 +787,9 @@ int main(int argc, char** argv) {
         return exit_invalid;
     }
 
+    // The viewer ends on SIGINT/SIGTERM through SDL, which installs its own
+    // handlers only where none is set.
+    if (!view->parsed()) install_signal_handlers();
     try {
         if (render->parsed()) return run_render(render_arguments);
         if (check->parsed()) return run_check(check_arguments);
@@ -750,6 +814,15 @@ int main(int argc, char** argv) {
     } catch (const UsageError& error) {
         std::cerr << "error: " << error.message << "\n";
         return exit_invalid;
+    } catch (const std::bad_alloc&) {
+        // Never "std::bad_alloc": what ran out, and what to do about it.
+        std::cerr << "error: out of memory while " << (render->parsed() || compare->parsed() ||
+                                                           turntable->parsed() || bench->parsed()
+                                                       ? "building the meshes or rendering"
+                                                       : "reading or checking the scene")
+                  << "; lower the objects' tessellation, the image size or --max-triangles "
+                     "(docs/reliability.md)\n";
+        return exit_io;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";
         return exit_io;

@@ -19,13 +19,17 @@ struct ExportOptions {
     // Off: a file that would be written and already exists stops the export
     // (IoError with reason "already exists") before anything is written.
     bool replace_existing = false;
+    // Files the export reads (the scene files; the scene's mesh files are
+    // added by the export itself): an export never writes over one of them,
+    // --force or not (ArgumentError).
+    std::vector<std::filesystem::path> inputs;
 };
 
 // Writes, into `directory` (created if missing), a vertex and a fragment
 // shader for each reflection × shading pair the scene's objects use:
 // "<reflection>-<shading>.vert" and ".frag" (GLSL 3.30 core, the uniforms
-// they expect documented at their top), sized for the scene's lights. Each
-// file is written whole or not at all. Returns the paths written; throws
+// they expect documented at their top), sized for the scene's lights. The
+// folder's files are written all or none (write_folder_atomically). Returns the paths written; throws
 // IoError.
 std::vector<std::filesystem::path> export_glsl(const Scene& scene,
                                                const std::filesystem::path& directory,

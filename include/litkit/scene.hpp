@@ -127,6 +127,17 @@ inline constexpr Shading default_shading = Shading::Phong;
 // not TOML) and SceneError listing every problem found in the input.
 Scene load_scene(std::span<const std::filesystem::path> files);
 
+// The scene-wide triangle budget (docs/reliability.md): the objects' shapes
+// may need at most this many triangles together, counted from their
+// parameters before any mesh is built (about 3.5 GB to render on the CPU, so
+// that the 24 GiB machines litkit is tested on never run out of memory).
+inline constexpr std::uint64_t default_triangle_budget = 64'000'000;
+
+struct LoadOptions {
+    std::uint64_t max_triangles = default_triangle_budget;
+};
+Scene load_scene(std::span<const std::filesystem::path> files, const LoadOptions& options);
+
 // Parses one scene from text. `source_name` is used in messages and its
 // folder resolves relative mesh paths.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);

@@ -3,6 +3,7 @@
 // the input (types, keys, spelling); this checks what the values mean.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "litkit/error.hpp"
@@ -19,5 +20,12 @@ namespace litkit {
 // their geometry: one that cannot be read throws IoError located at its
 // `file` key.
 std::vector<Diagnostic> validate_scene(const Scene& scene);
+
+// The same, with a triangle budget other than default_triangle_budget.
+std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangle_budget);
+
+// The triangles `shape` will be made of, from its parameters alone (nothing
+// is built); 0 for a mesh file, whose size is bounded by the file size limit.
+std::uint64_t triangles_of(const Shape& shape);
 
 }  // namespace litkit

@@ -57,15 +57,6 @@ std::string pair_identifier(const ModelPair& pair) {
     return name;
 }
 
-void make_directory(const fs::path& directory) {
-    std::error_code error;
-    fs::create_directories(directory, error);
-    if (error || !fs::is_directory(directory))
-        throw IoError(directory.string(),
-                      error ? "cannot create the folder: " + error.message() : "not a folder", {},
-                      IoError::Access::Write);
-}
-
 // A C++ float literal that reads back as the same float: the GLSL
 // generator's shortest round-trip text ("0.05", "20.0", "1e-07") plus "f".
 std::string float_literal(float value) { return glsl::float_literal(value) + "f"; }
@@ -281,6 +272,29 @@ void check_new(const std::vector<fs::path>& files, const ExportOptions& options)
     }
 }
 
+// An export never writes over what it reads, even when replacing is allowed.
+void refuse_to_overwrite_inputs(const Scene& scene, const std::vector<fs::path>& files,
+                                const ExportOptions& options) {
+    std::vector<fs::path> inputs = options.inputs;
+    for (const SceneObject& object : scene.objects)
+        if (const auto* mesh = std::get_if<MeshFileShape>(&object.shape)) inputs.push_back(mesh->file);
+    for (const fs::path& file : files)
+        for (const fs::path& input : inputs)
+            if (same_file(file, input))
+                throw ArgumentError("refusing to write '" + file.string() +
+                                    "' over input file '" + input.string() +
+                                    "'; choose another folder with -o");
+}
+
+// The names of `files` within their folder, with their texts.
+std::vector<std::pair<std::string, std::string>> named(const std::vector<fs::path>& files,
+                                                       std::vector<std::string> texts) {
+    std::vector<std::pair<std::string, std::string>> result;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        result.emplace_back(files[i].filename().string(), std::move(texts[i]));
+    return result;
+}
+
 // CMake keeps these target names for itself.
 bool is_reserved_by_cmake(const std::string& name) {
     static const char* const reserved[] = {"all", "clean", "help", "install", "test", "package",
@@ -319,9 +333,9 @@ std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
         files.push_back(directory / (stem + ".frag"));
         texts.push_back(std::move(shaders.fragment));
     }
+    refuse_to_overwrite_inputs(scene, files, options);
     check_new(files, options);
-    make_directory(directory);
-    for (std::size_t i = 0; i < files.size(); ++i) write_file_atomically(files[i], texts[i]);
+    write_folder_atomically(directory, named(files, std::move(texts)));
     return files;
 }
 
@@ -388,10 +402,9 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
         "endif()\n";
 
     const std::vector<fs::path> written{directory / "main.cpp", directory / "CMakeLists.txt"};
+    refuse_to_overwrite_inputs(scene, written, options);
     check_new(written, options);
-    make_directory(directory);
-    write_file_atomically(written[0], program);
-    write_file_atomically(written[1], cmake);
+    write_folder_atomically(directory, named(written, {program, cmake}));
     return written;
 }
 

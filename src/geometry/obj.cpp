@@ -15,7 +15,9 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/obj_numbers.hpp"
 #include "litkit/error.hpp"
+#include "litkit/files.hpp"
 #include "litkit/shapes.hpp"
 
 namespace litkit {
@@ -71,9 +73,10 @@ Mesh load_obj(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path, status_error)) {
         throw IoError(name, std::strerror(EISDIR));
     }
-    errno = 0;
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw IoError(name, errno != 0 ? std::strerror(errno) : "cannot open the file");
+    // Bounded (docs/reliability.md), and every number checked first:
+    // tinyobjloader reads "nan", "abc" or "0,5" as 0 without a word.
+    std::istringstream file(read_file_limited(path));
+    detail::check_obj_numbers(file.view(), name);
 
     // Without tinyobjloader's triangulation: docs/spec.md §2 fixes the fan
     // (v0, vi, vi+1), made below. No material reader: materials play no part,

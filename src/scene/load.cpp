@@ -1,12 +1,20 @@
 // Scene files (docs/spec.md §5): reading them, parsing TOML, merging several files
 // into one Scene, and validating it (docs/spec.md §6). Problems are collected, never
 // thrown one at a time, so that a run reports all of them.
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <system_error>
 
+#include "litkit/files.hpp"
 #include "litkit/validate.hpp"
+#include "scene/nesting.hpp"
 #include "scene/reader.hpp"
 
 namespace litkit {
@@ -20,6 +28,7 @@ using detail::SceneReader;
 // Parses TOML text; a syntax error or invalid UTF-8 makes the file one that
 // cannot be read (docs/spec.md §6), located where parsing stopped.
 toml::table parse_toml(std::string_view text, const std::string& name) {
+    detail::check_nesting(text, name);  // toml++ recurses once per level
     try {
         return toml::parse(text, std::string_view(name));
     } catch (const toml::parse_error& failure) {
@@ -29,24 +38,34 @@ toml::table parse_toml(std::string_view text, const std::string& name) {
     }
 }
 
-std::string read_bytes(const fs::path& path) {
-    struct Closer {
-        void operator()(std::FILE* file) const { std::fclose(file); }
-    };
-    errno = 0;
-    std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-    if (!file) throw IoError(path.string(), std::generic_category().message(errno));
-    std::string bytes;
-    char buffer[1 << 16];
-    std::size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
-        bytes.append(buffer, count);
-    // Reading a directory fails here, with EISDIR.
-    if (std::ferror(file.get())) throw IoError(path.string(), std::generic_category().message(errno));
-    return bytes;
+std::string read_bytes(const fs::path& path) { return read_file_limited(path); }
+
+// A direction whose squared length is not a normal float (1e-30 squared is
+// 0 in float, 1e20 squared is infinite) would normalise to NaN wherever the
+// renderers normalise it: such directions are made unit length here, in
+// double. Every other direction is left exactly as written.
+glm::vec3 unit_if_needed(const glm::vec3& direction) {
+    const float squared = glm::dot(direction, direction);
+    if (squared >= std::numeric_limits<float>::min() && squared <= std::numeric_limits<float>::max())
+        return direction;
+    const glm::dvec3 d(direction);
+    const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    if (largest == 0.0) return direction;  // the zero vector: refused by validation
+    return glm::vec3(glm::normalize(d / largest));
 }
 
-Scene build_scene(std::span<const ParsedFile> files) {
+void normalise_tiny_and_huge_directions(Scene& scene) {
+    for (SceneLight& light : scene.lights) {
+        if (auto* directional = std::get_if<DirectionalLight>(&light.light.kind))
+            directional->direction = unit_if_needed(directional->direction);
+        if (auto* spot = std::get_if<SpotLight>(&light.light.kind))
+            spot->direction = unit_if_needed(spot->direction);
+    }
+    scene.observer.up = unit_if_needed(scene.observer.up);
+}
+
+Scene build_scene(std::span<const ParsedFile> files,
+                  std::uint64_t triangle_budget = default_triangle_budget) {
     Scene scene;
     SceneReader reader(scene);
     for (const ParsedFile& file : files) reader.read_file(file);
@@ -56,7 +75,7 @@ Scene build_scene(std::span<const ParsedFile> files) {
     // The value and geometry rules (validate.hpp) run too, so that one run
     // reports every problem; entities with shape errors hold defaults in
     // place of their bad values and are left out of the geometric checks.
-    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities())) {
+    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities(), triangle_budget)) {
         if (diagnostic.severity == Severity::Warning)
             scene.warnings.push_back(std::move(diagnostic));
         else
@@ -64,12 +83,15 @@ Scene build_scene(std::span<const ParsedFile> files) {
     }
     // A failed load still carries its warnings, for the caller to show.
     if (!diagnostics.empty()) throw SceneError(std::move(diagnostics), std::move(scene.warnings));
+    normalise_tiny_and_huge_directions(scene);
     return scene;
 }
 
 }  // namespace
 
-Scene load_scene(std::span<const std::filesystem::path> files) {
+Scene load_scene(std::span<const std::filesystem::path> files) { return load_scene(files, {}); }
+
+Scene load_scene(std::span<const std::filesystem::path> files, const LoadOptions& options) {
     std::vector<ParsedFile> parsed;
     parsed.reserve(files.size());
     for (const fs::path& path : files) {
@@ -77,7 +99,7 @@ Scene load_scene(std::span<const std::filesystem::path> files) {
         toml::table root = parse_toml(read_bytes(path), name);
         parsed.push_back(ParsedFile{std::move(name), path.parent_path(), std::move(root)});
     }
-    return build_scene(parsed);
+    return build_scene(parsed, options.max_triangles);
 }
 
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name) {

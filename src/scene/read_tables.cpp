@@ -2,6 +2,7 @@
 // and how each becomes part of the Scene.
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <utility>
 
 #include "scene/reader.hpp"
@@ -12,6 +13,14 @@ namespace litkit::detail {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A number as the file wrote it: the shortest text that reads back as the
+// same double ("5.0000001", "1e-50").
+std::string written_text(double value) {
+    char buffer[64];
+    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
 
 // The names of the closed sets in scene files.
 constexpr std::array<std::string_view, 6> top_level_keys{"room",   "observer", "lighting",
@@ -163,6 +172,34 @@ void SceneReader::read_observer(const Site& site) {
     if (auto fov = read_number(site, "fov")) observer.fov_degrees = *fov;
     if (auto near = read_number(site, "near")) observer.near = *near;
     if (auto far = read_number(site, "far")) observer.far = *far;
+    check_far_beyond_near(site);
+}
+
+// far > near (docs/spec.md §5), compared as written, in double: 5.0000001 and
+// 5 are one 32-bit float, and a check of the floats would report "far (5)
+// must be greater than near (5)", which the file never said.
+void SceneReader::check_far_beyond_near(const Site& site) {
+    const toml::node* near_node = site.table.get("near");
+    const toml::node* far_node = site.table.get("far");
+    if (!near_node && !far_node) return;
+    const Observer& observer = scene_.observer;
+    const std::optional<double> near_written =
+        near_node ? near_node->value<double>() : std::optional<double>(observer.near);
+    const std::optional<double> far_written =
+        far_node ? far_node->value<double>() : std::optional<double>(observer.far);
+    if (!near_written || !far_written) return;  // not numbers: already reported
+    const toml::node& place = far_node ? *far_node : *near_node;
+    if (!(*far_written > *near_written)) {
+        error(place.source(), site,
+              "far (" + written_text(*far_written) + ") must be greater than near (" +
+                  written_text(*near_written) + ")");
+    } else if (!(static_cast<float>(*far_written) > static_cast<float>(*near_written))) {
+        error(place.source(), site,
+              "far (" + written_text(*far_written) + ") and near (" + written_text(*near_written) +
+                  ") are the same 32-bit float (" +
+                  written_text(static_cast<double>(static_cast<float>(*far_written))) +
+                  "); make far greater than near by more than that precision");
+    }
 }
 
 void SceneReader::read_lighting(const Site& site) {

@@ -116,6 +116,15 @@ std::optional<float> SceneReader::number_value(const toml::node& node, const Sit
         error(node.source(), site, name + " " + number_text(value) + " is too large");
         return std::nullopt;
     }
+    // Scenes hold 32-bit floats: a value that is not 0 but becomes 0 would
+    // be reported later as "found 0", which the file never said.
+    if (value != 0.0 && static_cast<float>(value) == 0.0f) {
+        error(node.source(), site,
+              name + " " + number_text(value) + " is too small (closest to 0 a scene holds: " +
+                  number_text(static_cast<double>(std::numeric_limits<float>::denorm_min())) +
+                  "; write 0 for zero)");
+        return std::nullopt;
+    }
     return static_cast<float>(value);
 }
 

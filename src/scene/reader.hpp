@@ -97,6 +97,8 @@ public:
     const BrokenEntities& broken_entities() const { return broken_; }
 
 private:
+    void check_far_beyond_near(const Site& site);
+
     // Reporting.
     FileLoc location(const toml::source_region& region) const {
         return FileLoc{file_->name, region.begin.line, region.begin.column};

@@ -3,6 +3,7 @@
 // located at the offending value.
 #include "litkit/validate.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
@@ -10,7 +11,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <unordered_map>
 #include <optional>
 #include <string>
 
@@ -57,6 +60,86 @@ std::string light_label(const SceneLight& light, std::size_t index) {
                               : "light '" + light.name + "'";
 }
 
+// A position as a hash key: equal positions (== on each coordinate, so 0 and
+// -0 are one) give equal keys.
+std::string position_key(const glm::vec3& p) {
+    std::string key(sizeof(float) * 3, '\0');
+    const float coordinates[3] = {p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};  // -0 + 0 is +0
+    std::memcpy(key.data(), coordinates, sizeof coordinates);
+    return key;
+}
+
+// An axis-aligned bounding box: the broad phase of the overlap and
+// containment tests (two hulls can only meet where their boxes do).
+struct Box {
+    glm::vec3 low{0.0f};
+    glm::vec3 high{0.0f};
+    bool empty = true;
+    bool overlaps(const Box& other) const {
+        return !empty && !other.empty && low.x <= other.high.x && other.low.x <= high.x &&
+               low.y <= other.high.y && other.low.y <= high.y && low.z <= other.high.z &&
+               other.low.z <= high.z;
+    }
+    bool contains(const glm::vec3& p) const {
+        return !empty && p.x >= low.x && p.x <= high.x && p.y >= low.y && p.y <= high.y &&
+               p.z >= low.z && p.z <= high.z;
+    }
+};
+
+Box box_of(const std::vector<glm::vec3>& points) {
+    Box box;
+    if (points.empty()) return box;
+    box.empty = false;
+    box.low = box.high = points.front();
+    for (const glm::vec3& p : points) {
+        box.low = glm::min(box.low, p);
+        box.high = glm::max(box.high, p);
+    }
+    return box;
+}
+
+// For each object, the earlier objects whose boxes meet its box, in
+// increasing order: sort and sweep along x, then test y and z.
+std::vector<std::vector<std::size_t>> overlapping_boxes(const std::vector<Box>& boxes) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        if (!boxes[i].empty) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return boxes[a].low.x < boxes[b].low.x; });
+    std::vector<std::vector<std::size_t>> candidates(boxes.size());
+    std::vector<std::size_t> active;  // boxes whose x interval may still meet the next one
+    for (const std::size_t i : order) {
+        std::erase_if(active, [&](std::size_t j) { return boxes[j].high.x < boxes[i].low.x; });
+        for (const std::size_t j : active) {
+            if (!boxes[i].overlaps(boxes[j])) continue;
+            candidates[std::max(i, j)].push_back(std::min(i, j));
+        }
+        active.push_back(i);
+    }
+    for (std::vector<std::size_t>& list : candidates) std::sort(list.begin(), list.end());
+    return candidates;
+}
+
+// The sine of the angle between two non-zero vectors, in double and free of
+// scale: a view of length 4e19 (whose square overflows a float) or an up of
+// length 1e-30 (whose square underflows) gives the same answer as at 1.
+double sine_between(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 unit_a = a / std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    const glm::dvec3 unit_b = b / std::max({std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+    return glm::length(glm::cross(unit_a, unit_b)) / (glm::length(unit_a) * glm::length(unit_b));
+}
+
+// 268435456 → "268,435,456".
+std::string grouped(std::uint64_t value) {
+    const std::string digits = std::to_string(value);
+    std::string text;
+    for (std::size_t at = 0; at < digits.size(); ++at) {
+        if (at > 0 && (digits.size() - at) % 3 == 0) text += ',';
+        text += digits[at];
+    }
+    return text;
+}
+
 const glm::vec3* light_position(const Light& light) {
     if (const auto* point = std::get_if<PointLight>(&light.kind)) return &point->position;
     if (const auto* spot = std::get_if<SpotLight>(&light.kind)) return &spot->position;
@@ -65,7 +148,8 @@ const glm::vec3* light_position(const Light& light) {
 
 class Validator {
 public:
-    Validator(const Scene& scene, const BrokenEntities& broken) : scene_(scene), broken_(broken) {}
+    Validator(const Scene& scene, const BrokenEntities& broken, std::uint64_t triangle_budget)
+        : scene_(scene), broken_(broken), triangle_budget_(triangle_budget) {}
 
     std::vector<Diagnostic> run() {
         check_room();
@@ -75,7 +159,9 @@ public:
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
         check_names();
-        check_geometry();
+        // Over the budget, no mesh is built: the geometric checks would
+        // allocate what the budget exists to refuse.
+        if (within_triangle_budget()) check_geometry();
         check_warnings();
         return std::move(diagnostics_);
     }
@@ -185,7 +271,11 @@ private:
             error("observer.fov", "observer",
                   "fov must be in (0, 180) degrees, found " + number_text(o.fov_degrees));
         at_least(o.near, 0.0f, false, "observer.near", "observer", "near");
-        if (!(o.far > o.near))
+        // A scene read from a file had far and near compared as written (the
+        // reader, check_far_beyond_near); this check is for scenes built in code.
+        const bool far_near_from_file =
+            scene_.locations.contains("observer.far") || scene_.locations.contains("observer.near");
+        if (!far_near_from_file && !(o.far > o.near))
             error("observer.far", "observer",
                   "far (" + number_text(o.far) + ") must be greater than near (" +
                       number_text(o.near) + ")");
@@ -200,7 +290,8 @@ private:
                   "look_at " + vector_text(o.look_at) + " is the observer's own position");
         } else if (o.up == glm::vec3(0.0f)) {
             error("observer.up", "observer", "up must not be the zero vector");
-        } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(o.up))) < 1e-6f) {
+        } else if (sine_between(glm::dvec3(o.look_at) - glm::dvec3(o.position), glm::dvec3(o.up)) <
+                   1e-6) {
             error("observer.up", "observer",
                   "up " + vector_text(o.up) + " is parallel to the view direction " +
                       vector_text(view));
@@ -245,14 +336,14 @@ private:
             if (observer_position_ok_ && *position == scene_.observer.position)
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is the observer's position");
-            for (std::size_t other = 0; other < index; ++other) {
-                const glm::vec3* earlier = light_position(scene_.lights[other].light);
-                if (earlier && usable("lights[" + std::to_string(other) + "]") &&
-                    *earlier == *position)
-                    error(base + ".position", who,
-                          "position " + vector_text(*position) + " is also the position of " +
-                              light_label(scene_.lights[other], other));
-            }
+            // Earlier lights at the same place, found by hashing (a loop over
+            // every earlier light made 100,000 lights take minutes).
+            std::vector<std::size_t>& same_place = light_positions_[position_key(*position)];
+            for (const std::size_t other : same_place)
+                error(base + ".position", who,
+                      "position " + vector_text(*position) + " is also the position of " +
+                          light_label(scene_.lights[other], other));
+            same_place.push_back(index);
         }
     }
 
@@ -357,11 +448,16 @@ private:
             } catch (const IoError& failure) {
                 // Point at the scene's `file` key, and keep the line inside
                 // the mesh file where reading stopped.
-                std::string reason = failure.reason();
-                if (failure.location().line > 0)
-                    reason += " (line " + std::to_string(failure.location().line) + ")";
-                throw IoError(failure.path(), reason,
-                              where("objects[" + std::to_string(i) + "].file"));
+                const FileLoc scene_place = where("objects[" + std::to_string(i) + "].file");
+                if (failure.location().line > 0) {
+                    // "mesh.obj:6:3: error: …": the place in the mesh file
+                    // first, where an editor jumps; the scene's key after.
+                    throw IoError(failure.path(),
+                                  failure.reason() + " (objects[" + std::to_string(i) +
+                                      "].file at " + scene_place.to_string() + ")",
+                                  failure.location());
+                }
+                throw IoError(failure.path(), failure.reason(), scene_place);
             }
             // docs/spec.md §9.2: "file" normals need one at every face corner.
             const auto* file = std::get_if<MeshFileShape>(&object.shape);
@@ -377,8 +473,44 @@ private:
         }
     }
 
+    // docs/reliability.md: the objects' triangles together, from their
+    // parameters, against the budget; the error names the largest objects.
+    bool within_triangle_budget() {
+        std::uint64_t total = 0;
+        std::vector<std::pair<std::uint64_t, std::size_t>> sizes;  // triangles, object
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            if (!shape_ok_[i]) continue;
+            const std::uint64_t triangles = triangles_of(scene_.objects[i].shape);
+            total += triangles;
+            sizes.emplace_back(triangles, i);
+        }
+        if (total <= triangle_budget_) return true;
+        std::stable_sort(sizes.begin(), sizes.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::string largest;
+        const std::size_t named = std::min<std::size_t>(sizes.size(), 5);
+        for (std::size_t k = 0; k < named; ++k) {
+            if (k) largest += ", ";
+            largest += object_label(scene_.objects[sizes[k].second], sizes[k].second) + " " +
+                       grouped(sizes[k].first);
+        }
+        if (sizes.size() > named) largest += " and " + std::to_string(sizes.size() - named) + " more";
+        const std::size_t biggest = sizes.front().second;
+        error("objects[" + std::to_string(biggest) + "]",
+              subject("objects", biggest, scene_.objects[biggest].name),
+              "the objects need " + grouped(total) + " triangles together, more than the budget of " +
+                  grouped(triangle_budget_) + " (" + largest +
+                  "); lower their tessellation, or raise the budget with --max-triangles "
+                  "(docs/reliability.md)");
+        return false;
+    }
+
     void check_geometry() {
         build_hulls();
+        boxes_.assign(hulls_.size(), Box{});
+        for (std::size_t i = 0; i < hulls_.size(); ++i)
+            if (hulls_[i]) boxes_[i] = box_of(*hulls_[i]);
+        const std::vector<std::vector<std::size_t>> candidates = overlapping_boxes(boxes_);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             if (!hulls_[i]) continue;
             const std::string base = "objects[" + std::to_string(i) + "]";
@@ -393,8 +525,8 @@ private:
                     }
                 }
             }
-            for (std::size_t j = 0; j < i; ++j) {
-                if (hulls_[j] && hulls_intersect(*hulls_[i], *hulls_[j]))
+            for (const std::size_t j : candidates[i]) {
+                if (hulls_intersect(*hulls_[i], *hulls_[j]))
                     error(base + ".position", who,
                           "overlaps " + object_label(scene_.objects[j], j));
             }
@@ -409,7 +541,8 @@ private:
             const glm::vec3* position = light_position(scene_.lights[l].light);
             if (!position || !usable("lights[" + std::to_string(l) + "]")) continue;
             for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-                if (hulls_[i] && hull_contains(*hulls_[i], *position))
+                if (hulls_[i] && boxes_[i].contains(*position) &&
+                    hull_contains(*hulls_[i], *position))
                     error("lights[" + std::to_string(l) + "].position",
                           subject("lights", l, scene_.lights[l].name),
                           "position " + vector_text(*position) + " is inside " +
@@ -465,20 +598,50 @@ private:
 
     const Scene& scene_;
     const BrokenEntities& broken_;
+    std::uint64_t triangle_budget_;
     std::vector<Diagnostic> diagnostics_;
     bool room_ok_ = true;
     bool observer_ok_ = true;           // the whole view is usable
     bool observer_position_ok_ = true;  // the position alone is usable
     std::vector<bool> shape_ok_;
     std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
+    std::vector<Box> boxes_;  // each hull's bounding box (empty: no hull)
+    std::unordered_map<std::string, std::vector<std::size_t>> light_positions_;
 };
 
 }  // namespace
 
-std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken) {
-    return Validator(scene, broken).run();
+std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken,
+                                      std::uint64_t triangle_budget) {
+    return Validator(scene, broken, triangle_budget).run();
 }
 
-std::vector<Diagnostic> validate_scene(const Scene& scene) { return validate_scene(scene, {}); }
+std::vector<Diagnostic> validate_scene(const Scene& scene) {
+    return validate_scene(scene, BrokenEntities{}, default_triangle_budget);
+}
+
+std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangle_budget) {
+    return validate_scene(scene, {}, triangle_budget);
+}
+
+std::uint64_t triangles_of(const Shape& shape) {
+    struct Count {
+        std::uint64_t operator()(const CubeShape&) const { return 12; }
+        std::uint64_t operator()(const SphereShape& s) const {  // make_sphere's reserve
+            return 2 * static_cast<std::uint64_t>(std::max(s.segments, 0)) *
+                   static_cast<std::uint64_t>(std::max(s.rings - 1, 0));
+        }
+        std::uint64_t operator()(const TorusShape& t) const {
+            return 2 * static_cast<std::uint64_t>(std::max(t.segments, 0)) *
+                   static_cast<std::uint64_t>(std::max(t.sides, 0));
+        }
+        std::uint64_t operator()(const TeapotShape& t) const {  // 32 patches, s² quads each
+            const auto s = static_cast<std::uint64_t>(std::max(t.subdivisions, 0));
+            return 32 * 2 * s * s;
+        }
+        std::uint64_t operator()(const MeshFileShape&) const { return 0; }
+    };
+    return std::visit(Count{}, shape);
+}
 
 }  // namespace litkit

@@ -1,0 +1,167 @@
+#include "geometry/obj_numbers.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "litkit/error.hpp"
+
+namespace litkit::detail {
+
+namespace {
+
+struct Word {
+    std::string_view text;
+    std::uint32_t column;  // 1-based
+};
+
+std::vector<Word> words_of(std::string_view line) {
+    std::vector<Word> words;
+    std::size_t at = 0;
+    while (at < line.size()) {
+        while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '\r')) ++at;
+        const std::size_t start = at;
+        while (at < line.size() && line[at] != ' ' && line[at] != '\t' && line[at] != '\r') ++at;
+        if (at > start)
+            words.push_back({line.substr(start, at - start), static_cast<std::uint32_t>(start + 1)});
+    }
+    return words;
+}
+
+// The whole word as a number, or nothing (std::from_chars: no locale, so a
+// decimal comma is never read as a point).
+// `out_of_range`: a number, but beyond what a double holds (1e999, 1e-999).
+bool read_number(std::string_view word, double& value, bool& out_of_range) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    out_of_range = error == std::errc::result_out_of_range && end == word.data() + word.size();
+    return error == std::errc() && end == word.data() + word.size();
+}
+
+bool read_integer(std::string_view word, long long& value) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    return error == std::errc() && end == word.data() + word.size();
+}
+
+struct Counts {
+    long long vertices = 0;
+    long long texture_coordinates = 0;
+    long long normals = 0;
+};
+
+}  // namespace
+
+void check_obj_numbers(std::string_view text, const std::string& name) {
+    // Positive face indices may refer to any vertex of the file; negative
+    // ones count back from the last vertex read so far.
+    Counts total;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = text.substr(at, end - at);
+        std::size_t first = line.find_first_not_of(" \t");
+        if (first != std::string_view::npos) {
+            const std::string_view rest = line.substr(first);
+            if (rest.starts_with("v ") || rest.starts_with("v\t")) ++total.vertices;
+            if (rest.starts_with("vt ") || rest.starts_with("vt\t")) ++total.texture_coordinates;
+            if (rest.starts_with("vn ") || rest.starts_with("vn\t")) ++total.normals;
+        }
+        at = end + 1;
+    }
+
+    Counts seen;
+    std::uint32_t line_number = 0;
+    std::size_t face_number = 0;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = text.substr(at, end - at);
+        at = end + 1;
+        ++line_number;
+        const std::vector<Word> words = words_of(line);
+        if (words.empty()) continue;
+        auto fail = [&](std::uint32_t column, const std::string& reason) {
+            throw IoError(name, reason, FileLoc{name, line_number, column});
+        };
+        const std::string_view keyword = words[0].text;
+        auto check_coordinates = [&](const char* what, std::size_t needed, std::size_t checked) {
+            static const char* const axes[] = {"x", "y", "z", "w", "", ""};
+            if (words.size() - 1 < needed)
+                fail(words.back().column + static_cast<std::uint32_t>(words.back().text.size()),
+                     std::string(what) + " needs " + std::to_string(needed) + " coordinate" +
+                         (needed == 1 ? "" : "s") + ", found " + std::to_string(words.size() - 1));
+            for (std::size_t i = 1; i < words.size() && i <= checked; ++i) {
+                double value = 0;
+                const std::string word(words[i].text);
+                const std::string axis = i - 1 < 4 && *axes[i - 1] ? std::string(" ") + axes[i - 1] : "";
+                bool out_of_range = false;
+                if (!read_number(words[i].text, value, out_of_range) && out_of_range) {
+                    fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
+                                              "' is beyond the range of numbers litkit reads");
+                }
+                if (!out_of_range && !read_number(words[i].text, value, out_of_range)) {
+                    fail(words[i].column,
+                         std::string(what) + axis + " coordinate '" + word + "' is not a number" +
+                             (word.find(',') != std::string::npos
+                                  ? " (write the decimal separator as a point: '.')"
+                                  : ""));
+                }
+                if (!std::isfinite(value))
+                    fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
+                                              "' is not a finite number");
+            }
+        };
+        if (keyword == "v") {
+            // x y z, an optional w or an r g b colour (tinyobjloader's extension).
+            check_coordinates("vertex", 3, 6);
+            ++seen.vertices;
+        } else if (keyword == "vn") {
+            check_coordinates("normal", 3, 3);
+            ++seen.normals;
+        } else if (keyword == "vt") {
+            check_coordinates("texture coordinate", 1, 3);
+            ++seen.texture_coordinates;
+        } else if (keyword == "f") {
+            if (words.size() >= 4) ++face_number;
+            for (std::size_t i = 1; i < words.size(); ++i) {
+                // v, v/vt, v//vn or v/vt/vn
+                std::string_view corner = words[i].text;
+                std::uint32_t column = words[i].column;
+                const char* const kinds[] = {"vertex", "texture coordinate", "normal"};
+                const char* const plurals[] = {"vertices", "texture coordinates", "normals"};
+                const long long defined[] = {total.vertices, total.texture_coordinates, total.normals};
+                const long long before[] = {seen.vertices, seen.texture_coordinates, seen.normals};
+                for (int part = 0; part < 3; ++part) {
+                    const std::size_t slash = corner.find('/');
+                    const std::string_view index_text = corner.substr(0, slash);
+                    if (!index_text.empty() || part == 0) {
+                        long long index = 0;
+                        if (!read_integer(index_text, index) || index == 0)
+                            fail(column, "face corner '" + std::string(words[i].text) +
+                                             "': '" + std::string(index_text) +
+                                             "' is not a " + kinds[part] + " number (1, 2, … or -1, -2, …)");
+                        const bool in_range =
+                            index > 0 ? index <= defined[part] : -index <= before[part];
+                        if (!in_range) {
+                            const std::string face = words.size() >= 4
+                                                         ? "face " + std::to_string(face_number)
+                                                         : std::string("face");
+                            fail(column, face + " refers to " + kinds[part] + " " +
+                                             std::to_string(index) + ", but the file defines " +
+                                             std::to_string(index > 0 ? defined[part] : before[part]) +
+                                             " " + plurals[part] +
+                                             (index < 0 ? " before it" : ""));
+                        }
+                    }
+                    if (slash == std::string_view::npos) break;
+                    column += static_cast<std::uint32_t>(slash + 1);
+                    corner.remove_prefix(slash + 1);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace litkit::detail

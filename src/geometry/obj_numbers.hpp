@@ -1,0 +1,17 @@
+// The numbers of an OBJ file checked before tinyobjloader reads them: it
+// reads "nan", "abc", "0,5" (a decimal comma) or a missing coordinate as 0
+// and says nothing, and only warns about a face index out of range.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace litkit::detail {
+
+// Throws IoError located at "mesh.obj:LINE:COLUMN" for the first coordinate
+// of `v`, `vn` or `vt` that is missing, not a number or not finite, and for
+// the first face index that is not an integer or refers to no vertex
+// (texture coordinate, normal) of the file.
+void check_obj_numbers(std::string_view text, const std::string& name);
+
+}  // namespace litkit::detail
