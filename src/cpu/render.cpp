@@ -61,8 +61,8 @@ struct PreparedObject {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     equations::MaterialT<float> material;
     Material raw_material;
-    Reflection reflection;
-    Shading shading;
+    Reflection reflection = Reflection::Phong;  // set by prepare_surfaces
+    Shading shading = Shading::Phong;
 };
 
 // Guard band: triangles are clipped at |x|, |y| ≤ guard_band · w, well outside
