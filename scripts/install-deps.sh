@@ -24,6 +24,8 @@ packages=(
   # litkit view: Dear ImGui's panel; its tests drive a real window on Xvfb
   # with xdotool and read it back with xwd.
   libimgui-dev libstb-dev xdotool x11-apps
+  # test_teach parses explain --json with Python's json module.
+  python3
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)
