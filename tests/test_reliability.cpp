@@ -457,14 +457,13 @@ TEST_F(Reliability, NestingAtTheLimitIsReadByToml) {
 
 TEST_F(Reliability, AZeroDeviceAsTheSceneIsRefusedQuicklyWithItsName) {
     ASSERT_EQ(::mknod((dir / "zero").c_str(), S_IFCHR | 0666, ::makedev(1, 5)), 0);
-    const auto start = std::chrono::steady_clock::now();
+    // The message is the proof that reading stopped at the limit (without it
+    // the read goes on until memory runs out); no timing is asserted, as a
+    // busy machine reads 256 MiB slowly.
     CommandRun run = cli("check zero");
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(run.status, 1) << run.output;
     EXPECT_EQ(run.output, "error: cannot read 'zero': larger than the limit of 256 MiB for scene "
                           "and mesh files (docs/reliability.md)\n");
-    EXPECT_LT(seconds, 10.0);
 }
 
 TEST_F(Reliability, AZeroDeviceAsTheMeshIsRefusedWithItsName) {
@@ -636,8 +635,10 @@ TEST_F(Reliability, TinyAndHugeDirectionsDrawWhatUnitDirectionsDraw) {
 
 TEST_F(Reliability, AViewOfLength4e19IsNotCalledParallelToUp) {
     // small_scene scaled by 1e19: the view's squared length overflows a float.
+    // (near and far scaled too: at their defaults the sphere, 3e19 away, is
+    // beyond far = 1000, which check rightly warns of.)
     write("big.toml", "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
-                      "position = [0, 0, 4e19]\n[lighting]\nreflection = \"phong\"\nshading = "
+                      "position = [0, 0, 4e19]\nnear = 5e17\nfar = 1e22\n[lighting]\nreflection = \"phong\"\nshading = "
                       "\"phong\"\n[[lights]]\ntype = \"directional\"\ndirection = [1, -1, -1]\n"
                       "[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
     const CommandRun run = cli("check big.toml");

@@ -29,11 +29,15 @@ struct Room {
 };
 
 // The single perspective camera (docs/spec.md §1, AB3).
+// The narrowest field of view (docs/reliability.md): below about 1e-7
+// degrees a float's positions are coarser than the pixels.
+inline constexpr float smallest_fov_degrees = 0.01f;
+
 struct Observer {
     glm::vec3 position{0.0f, 0.0f, 5.0f};
     glm::vec3 look_at{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fov_degrees = 45.0f;  // vertical
+    float fov_degrees = 45.0f;  // vertical, in [smallest_fov_degrees, 180)
     float near = 0.05f;
     float far = 1000.0f;
 };

@@ -33,6 +33,7 @@
 #include "litkit/equations.hpp"
 #include "cpu/shade_kernel.hpp"
 #include "cpu/thread_pool.hpp"
+#include "scene/float_range.hpp"
 
 namespace litkit {
 
@@ -173,6 +174,7 @@ struct BandScratch {
 }  // namespace
 
 struct Renderer::Impl {
+    float length_scale;
     Scene scene;
     RenderOptions options;
     ThreadPool pool;
@@ -192,8 +194,11 @@ struct Renderer::Impl {
     int probe_x = -1, probe_y = -1;
     mutable PixelProbe probed;
 
+    // The scene as drawn: its lengths brought into a float's comfortable
+    // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
     Impl(const Scene& s, RenderOptions o)
-        : scene(s),
+        : length_scale(float_safe_length_scale(s)),
+          scene(scale_lengths(s, length_scale)),
           options(o),
           pool(o.threads),
           kernels(o.kernels == RenderOptions::Kernels::Portable ? kernels::portable_kernels
@@ -714,14 +719,17 @@ void Renderer::render_into(Image& image) {
     });
 }
 
-void Renderer::update(const Scene& scene) {
+void Renderer::update(const Scene& new_scene) {
     Impl& impl = *impl_;
+    const float length_scale = float_safe_length_scale(new_scene);
+    const Scene scene = scale_lengths(new_scene, length_scale);
     bool same = scene.objects.size() == impl.scene.objects.size();
     for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
         same = same_geometry(scene.objects[o], impl.scene.objects[o]) &&
                normal_options(scene, scene.objects[o]) ==
                    normal_options(impl.scene, impl.scene.objects[o]);
     impl.scene = scene;
+    impl.length_scale = length_scale;
     if (same) {
         impl.prepare_surfaces();
     } else {
@@ -750,6 +758,7 @@ PixelProbe Renderer::probe(int x, int y) {
     }
     impl_->probe_x = impl_->probe_y = -1;
     PixelProbe result = impl_->probed;
+    result.position /= impl_->length_scale;  // in the scene's own lengths
     const std::uint8_t* pixel = image.pixel(x, y);
     result.rgb = {pixel[0], pixel[1], pixel[2]};
     return result;

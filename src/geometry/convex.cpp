@@ -140,7 +140,11 @@ bool tetrahedron_case(Simplex& s, dvec3& direction, double scale) {
 // GJK on the Minkowski difference A − B: do the hulls share a point?
 bool gjk_intersect(const Hull& a, const Hull& b) {
     if (a.points.empty() || b.points.empty()) return false;
-    const double scale = std::max({a.extent(), b.extent(), 1e-12});
+    // The hulls' own size sets every tolerance, so the test is free of scale
+    // (a scene of 1e-25 is judged as one of 1); two single points compare
+    // exactly.
+    const double scale =
+        std::max({a.extent(), b.extent(), std::numeric_limits<double>::min()});
     auto support = [&](const dvec3& d) { return a.support(d) - b.support(-d); };
 
     dvec3 direction = a.centre - b.centre;

@@ -19,6 +19,7 @@
 
 #include "litkit/convex.hpp"
 #include "litkit/shapes.hpp"
+#include "scene/float_range.hpp"
 #include "scene/validate_internal.hpp"
 
 namespace litkit {
@@ -267,9 +268,12 @@ private:
     void check_observer() {
         const Observer& o = scene_.observer;
         const std::size_t before = diagnostics_.size();
-        if (!(o.fov_degrees > 0.0f && o.fov_degrees < 180.0f))
+        // The lower bound is docs/reliability.md's: below about 1e-7 degrees
+        // a float's positions are coarser than the pixels and the picture
+        // gets holes; 0.01 keeps a margin of 1000 at the largest image.
+        if (!(o.fov_degrees >= smallest_fov_degrees && o.fov_degrees < 180.0f))
             error("observer.fov", "observer",
-                  "fov must be in (0, 180) degrees, found " + number_text(o.fov_degrees));
+                  "fov must be in [0.01, 180) degrees, found " + number_text(o.fov_degrees));
         at_least(o.near, 0.0f, false, "observer.near", "observer", "near");
         // A scene read from a file had far and near compared as written (the
         // reader, check_far_beyond_near); this check is for scenes built in code.
@@ -573,7 +577,10 @@ private:
         if (!observer_ok_ || !usable("output")) return;
         // An object is surely out of view when all its vertices lie beyond
         // one plane of the view frustum.
-        const Observer& o = scene_.observer;
+        // In the scene's lengths brought to a float's range (a power of two,
+        // exact), so that near · far of a room of 1e19 cannot overflow.
+        const float k = float_safe_length_scale(scene_);
+        const Observer o = scale_lengths(scene_.observer, k);
         const float aspect = static_cast<float>(scene_.output.width) /
                              static_cast<float>(std::max(1, scene_.output.height));
         if (!(aspect > 0.0f)) return;
@@ -584,7 +591,7 @@ private:
             if (!hulls_[i] || hulls_[i]->empty()) continue;
             bool outside[6] = {true, true, true, true, true, true};
             for (const glm::vec3& p : *hulls_[i]) {
-                const glm::vec4 c = view_projection * glm::vec4(p, 1.0f);
+                const glm::vec4 c = view_projection * glm::vec4(k * p, 1.0f);
                 const float distances[6] = {c.w + c.x, c.w - c.x, c.w + c.y,
                                             c.w - c.y, c.w + c.z, c.w - c.z};
                 for (int k = 0; k < 6; ++k) outside[k] = outside[k] && distances[k] < 0.0f;
