@@ -1,5 +1,6 @@
 #include "litkit/mesh.hpp"
 #include "litkit/error.hpp"
+#include "geometry/creased_normals.hpp"
 
 #include <algorithm>
 #include <array>
@@ -136,6 +137,7 @@ class WeldGrid {
         int key_bits = 0;
         if (use_cells) {
             cell_size_ = cells_per_weld_distance * weld_distance;
+            inverse_cell_size_ = 1.0 / cell_size_;
             for (int axis = 0; axis < 3; ++axis) {
                 bits_[axis] = std::bit_width(cell_coordinate(highest[axis], axis));
                 largest_[axis] = (std::uint64_t{1} << bits_[axis]) - 1;
@@ -153,6 +155,20 @@ class WeldGrid {
                                                  : 0;
             points_.push_back({cell, position, static_cast<std::uint32_t>(index)});
         }
+        // Most points lie well inside their cell: only those within two
+        // weld distances of a face (twice, so that rounding can never hide
+        // one) look into the neighbouring cells.
+        near_face_.assign(positions.size(), 0);
+        if (use_cells) {
+            const double margin = 2.0 / cells_per_weld_distance;
+            for (const GridPoint& point : points_) {
+                for (int axis = 0; axis < 3; ++axis) {
+                    const double place = (double(point.position[axis]) - origin_[axis]) * inverse_cell_size_;
+                    const double within = place - std::floor(place);  // 0 to 1 across the cell
+                    if (within < margin || within > 1.0 - margin) near_face_[point.index] = 1;
+                }
+            }
+        }
         sort_by_cell(points_, key_bits);
         for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
             while (end < points_.size() && points_[end].cell == points_[begin].cell) ++end;
@@ -167,7 +183,8 @@ class WeldGrid {
         for (std::size_t cell = 0; cell < cells_.size(); ++cell) {
             for (std::size_t point = cells_[cell].begin; point < cells_[cell].end; ++point) {
                 weld_within_cell(point, cells_[cell].end, sets);
-                if (cell_size_ > 0.0) weld_with_neighbour_cells(point, sets);
+                if (cell_size_ > 0.0 && near_face_[points_[point].index])
+                    weld_with_neighbour_cells(point, sets);
             }
         }
     }
@@ -186,7 +203,9 @@ class WeldGrid {
     // Clamped to the grid: a lookup beyond its last cell finds that cell,
     // whose points the distance test then rejects.
     std::uint64_t cell_coordinate(double value, int axis) const {
-        const double cell = std::floor((value - origin_[axis]) / cell_size_);
+        // A multiplication, not a division: the same (monotonic) function
+        // places the points and looks them up, which is all exactness needs.
+        const double cell = std::floor((value - origin_[axis]) * inverse_cell_size_);
         if (!(cell > 0.0)) return 0;
         if (cell >= double(largest_[axis])) return largest_[axis];
         return static_cast<std::uint64_t>(cell);
@@ -276,10 +295,12 @@ class WeldGrid {
     glm::dvec3 origin_;
     double weld_distance_;
     double cell_size_ = 0.0;
+    double inverse_cell_size_ = 0.0;
     std::array<int, 3> bits_{0, 0, 0};  // key bits per axis
     std::array<std::uint64_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
                                           largest_cell_coordinate};
     std::vector<GridPoint> points_;
+    std::vector<std::uint8_t> near_face_;  // per position index: near a face of its cell
     std::vector<CellRange> cells_;
 };
 
@@ -349,6 +370,14 @@ struct CornerWeights {
     std::vector<glm::vec3> unit_normals;  // DD8 per triangle, when asked for
 };
 
+// atan2(sine_part, cosine_part) in float, the pair first divided by its
+// larger magnitude so that no size of triangle overflows or underflows a
+// float (the angle is the same).
+float angle_between(double sine_part, double cosine_part) {
+    const double larger = std::max(std::abs(sine_part), std::abs(cosine_part));
+    return std::atan2(float(sine_part / larger), float(cosine_part / larger));
+}
+
 // The weighted normals of triangle (a, b, c) at its corners; false for a
 // triangle that takes no part (zero area, which includes a zero-length
 // edge, or non-finite).
@@ -375,13 +404,17 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
         case Normals::Angle: {
             // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
             // π minus those (a triangle's angles sum to π), one call fewer.
-            const double angle0 =
-                std::atan2(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
-            const double angle1 =
-                std::atan2(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
-            const double angle2 = std::max(0.0, std::numbers::pi - angle0 - angle1);
-            out[0] = glm::vec3(angle0 * unit);
-            out[1] = glm::vec3(angle1 * unit);
+            // In float (the weights are stored as floats): atan2f costs a
+            // third of the double atan2, which was most of this weighting's
+            // time (docs/performance.md).
+            const float angle0 = angle_between(
+                length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
+            const float angle1 = angle_between(
+                length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
+            const double angle2 =
+                std::max(0.0, std::numbers::pi - double(angle0) - double(angle1));
+            out[0] = glm::vec3(double(angle0) * unit);
+            out[1] = glm::vec3(double(angle1) * unit);
             out[2] = glm::vec3(angle2 * unit);
             break;
         }
@@ -463,14 +496,13 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting) {
     return normals;
 }
 
-std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
-                                      float crease_angle_degrees) {
+CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease_angle_degrees) {
     if (!(crease_angle_degrees > 0.0f && crease_angle_degrees <= 180.0f)) {
         throw std::invalid_argument("corner_normals: crease angle " +
                                     std::to_string(crease_angle_degrees) +
                                     " is outside (0, 180] degrees");
     }
-    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
+    const CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
     const std::size_t triangle_count = mesh.triangles.size();
 
     const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
@@ -506,63 +538,71 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
         }
     }
 
-    // Each corner's weight is read only while its own vertex is worked on,
-    // so the weights become the corners' normals in place.
-    std::vector<glm::vec3> normals = std::move(corners.weights);
+    CreasedNormals result;
+    result.position_normals.resize(position_count);
+    result.may_split.resize(position_count);
+    for (std::size_t p = 0; p < position_count; ++p) {
+        const std::uint32_t vertex = corners.vertex_of_position[p];
+        result.position_normals[p] = vertex_normal[vertex];
+        result.may_split[p] = pairwise[vertex];
+    }
+
+    // The corners at the other vertices, in corner order; an unusable
+    // triangle (a sliver between welded corners) takes its corners'
+    // unsplit vertex normals.
+    std::vector<std::uint32_t> first_corner(position_count + 1, 0);
     for (std::size_t t = 0; t < triangle_count; ++t) {
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
-            // An unusable triangle (a sliver between welded corners) takes
-            // its corners' unsplit vertex normals.
-            if (!corners.usable[t] || !pairwise[vertex]) normals[3 * t + k] = vertex_normal[vertex];
-        }
-    }
-
-    // The other vertices' usable corners, in triangle order (a counting
-    // sort), and each corner's sum over the faces within the crease angle.
-    std::vector<std::uint32_t> first_corner(position_count + 1, 0);
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        if (!corners.usable[t]) continue;
-        for (const std::uint32_t position : mesh.triangles[t]) {
-            const std::uint32_t vertex = corners.vertex_of_position[position];
-            if (pairwise[vertex]) ++first_corner[vertex + 1];
+            if (!pairwise[vertex]) continue;
+            result.split_corners.push_back(static_cast<std::uint32_t>(3 * t + k));
+            result.split_normals.push_back(vertex_normal[vertex]);
+            if (corners.usable[t]) ++first_corner[vertex + 1];
         }
     }
     std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
-    if (first_corner.back() == 0) return normals;
+    if (first_corner.back() == 0) return result;
+
+    // The usable ones grouped by vertex (a counting sort, keeping triangle
+    // order), each as its place in split_corners.
     std::vector<std::uint32_t> corners_at_vertex(first_corner.back());
     {
         std::vector<std::uint32_t> next(first_corner.begin(), first_corner.end() - 1);
-        for (std::size_t t = 0; t < triangle_count; ++t) {
-            if (!corners.usable[t]) continue;
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
-                if (pairwise[vertex])
-                    corners_at_vertex[next[vertex]++] = static_cast<std::uint32_t>(3 * t + k);
-            }
+        for (std::uint32_t at = 0; at < result.split_corners.size(); ++at) {
+            const std::uint32_t corner = result.split_corners[at];
+            if (!corners.usable[corner / 3]) continue;
+            const std::uint32_t vertex =
+                corners.vertex_of_position[mesh.triangles[corner / 3][corner % 3]];
+            corners_at_vertex[next[vertex]++] = at;
         }
     }
-    std::vector<glm::vec3> split;  // one vertex's corner normals, before they are written
     for (std::size_t vertex = 0; vertex < position_count; ++vertex) {
         const std::uint32_t begin = first_corner[vertex], end = first_corner[vertex + 1];
-        if (begin == end) continue;
         // docs/spec.md §9.2: corner f sums the triangles g with
         // n̂_f·n̂_g > cos(crease angle), and always itself.
-        split.clear();
         for (std::uint32_t own = begin; own < end; ++own) {
-            const std::uint32_t f = corners_at_vertex[own] / 3;
+            const std::uint32_t f = result.split_corners[corners_at_vertex[own]] / 3;
             glm::vec3 part(0.0f);
             for (std::uint32_t at = begin; at < end; ++at) {
-                const std::uint32_t corner = corners_at_vertex[at];
+                const std::uint32_t corner = result.split_corners[corners_at_vertex[at]];
                 const std::uint32_t g = corner / 3;
                 if (g == f || double(glm::dot(unit_normals[f], unit_normals[g])) > limit)
-                    part += normals[corner];
+                    part += corners.weights[corner];
             }
-            split.push_back(normalized_or_zero(part));
+            result.split_normals[corners_at_vertex[own]] = normalized_or_zero(part);
         }
-        for (std::uint32_t own = begin; own < end; ++own)
-            normals[corners_at_vertex[own]] = split[own - begin];
     }
+    return result;
+}
+
+std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
+                                      float crease_angle_degrees) {
+    const CreasedNormals creased = creased_normals(mesh, weighting, crease_angle_degrees);
+    std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) normals[3 * t + k] = creased.position_normals[mesh.triangles[t][k]];
+    for (std::size_t at = 0; at < creased.split_corners.size(); ++at)
+        normals[creased.split_corners[at]] = creased.split_normals[at];
     return normals;
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "geometry/creased_normals.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/validate_internal.hpp"
 
@@ -91,37 +92,68 @@ namespace {
 // docs/spec.md §9.2: a position once per distinct normal at it. A position's
 // first normal keeps the position's own index, so that where nothing splits
 // (a sphere under a crease) the mesh is exactly the unsplit one.
+class CornerSplitter {
+  public:
+    // `normals` has one entry per position of `mesh` and grows with it.
+    CornerSplitter(Mesh& mesh, std::vector<glm::vec3>& normals)
+        : mesh_(mesh),
+          normals_(normals),
+          assigned_(mesh.positions.size(), false),
+          next_copy_(mesh.positions.size(), none) {}
+
+    // Points `corner` (an index into the positions) at a position with `normal`.
+    void assign(std::uint32_t& corner, const glm::vec3& normal) {
+        if (!assigned_[corner]) {
+            assigned_[corner] = true;
+            normals_[corner] = normal;
+            return;
+        }
+        std::uint32_t copy = corner;
+        std::uint32_t last = corner;
+        while (copy != none && normals_[copy] != normal) {
+            last = copy;
+            copy = next_copy_[copy];
+        }
+        if (copy == none) {
+            copy = static_cast<std::uint32_t>(mesh_.positions.size());
+            mesh_.positions.push_back(mesh_.positions[corner]);
+            normals_.push_back(normal);
+            next_copy_.push_back(none);
+            next_copy_[last] = copy;
+        }
+        corner = copy;
+    }
+
+  private:
+    static constexpr std::uint32_t none = 0xffffffffu;
+    Mesh& mesh_;
+    std::vector<glm::vec3>& normals_;
+    std::vector<bool> assigned_;
+    std::vector<std::uint32_t> next_copy_;  // more copies of a position
+};
+
 void split_by_corner_normals(Mesh& mesh, const std::vector<glm::vec3>& normals_of_corners,
                              std::vector<glm::vec3>& normals) {
-    const std::size_t position_count = mesh.positions.size();
-    constexpr std::uint32_t none = 0xffffffffu;
-    std::vector<bool> assigned(position_count, false);
-    normals.assign(position_count, glm::vec3(0.0f));
-    std::vector<std::uint32_t> next_copy(position_count, none);  // more copies of a position
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            std::uint32_t& corner = mesh.triangles[t][k];
-            const glm::vec3& normal = normals_of_corners[3 * t + k];
-            if (!assigned[corner]) {
-                assigned[corner] = true;
-                normals[corner] = normal;
-                continue;
-            }
-            std::uint32_t copy = corner;
-            std::uint32_t last = corner;
-            while (copy != none && normals[copy] != normal) {
-                last = copy;
-                copy = next_copy[copy];
-            }
-            if (copy == none) {
-                copy = static_cast<std::uint32_t>(mesh.positions.size());
-                mesh.positions.push_back(mesh.positions[corner]);
-                normals.push_back(normal);
-                next_copy.push_back(none);
-                next_copy[last] = copy;
-            }
-            corner = copy;
-        }
+    normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+    CornerSplitter splitter(mesh, normals);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) splitter.assign(mesh.triangles[t][k], normals_of_corners[3 * t + k]);
+}
+
+// split_by_corner_normals for crease normals, touching only the corners at
+// vertices where faces may part: every other position keeps its index and
+// its vertex normal, as split_by_corner_normals would keep them, so the
+// result is the same mesh (docs/performance.md: a sphere under a crease
+// costs one pass more than without).
+void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm::vec3>& normals) {
+    normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+    for (const auto& triangle : mesh.triangles)  // positions no triangle uses stay zero
+        for (const std::uint32_t corner : triangle)
+            if (!creased.may_split[corner]) normals[corner] = creased.position_normals[corner];
+    CornerSplitter splitter(mesh, normals);
+    for (std::size_t at = 0; at < creased.split_corners.size(); ++at) {
+        const std::uint32_t corner = creased.split_corners[at];
+        splitter.assign(mesh.triangles[corner / 3][corner % 3], creased.split_normals[at]);
     }
 }
 
@@ -189,9 +221,9 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
         // docs/spec.md §9.2: with the file's normals the crease angle is ignored.
         split_by_corner_normals(mesh, file_corner_normals(mesh, object), local_normals);
     } else if (creased) {
-        split_by_corner_normals(
-            mesh, corner_normals(mesh, options.normals, *options.crease_angle_degrees),
-            local_normals);
+        split_at_creases(mesh,
+                         creased_normals(mesh, options.normals, *options.crease_angle_degrees),
+                         local_normals);
     } else {
         local_normals = vertex_normals(mesh, options.normals);
     }

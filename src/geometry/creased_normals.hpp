@@ -1,0 +1,31 @@
+// docs/spec.md §9.2 crease normals in the form world_mesh splits positions
+// by: a normal per position where nothing can split, and a normal per
+// corner only at the vertices where faces may part (corner_normals in
+// mesh.hpp gives the same normals as one per corner).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "litkit/mesh.hpp"
+
+namespace litkit {
+
+struct CreasedNormals {
+    // Per position: its welded vertex's normal, and whether the faces at
+    // that vertex may have different normals (then its corners are listed
+    // below).
+    std::vector<glm::vec3> position_normals;
+    std::vector<std::uint8_t> may_split;
+    // The corners (3·t + k) at those vertices, in increasing order, and
+    // each one's normal.
+    std::vector<std::uint32_t> split_corners;
+    std::vector<glm::vec3> split_normals;
+};
+
+// Throws as corner_normals does.
+CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease_angle_degrees);
+
+}  // namespace litkit
