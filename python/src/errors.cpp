@@ -37,6 +37,8 @@ void raise(PyObject* type, const litkit::Error& error,
     py::object instance = py::reinterpret_borrow<py::object>(type)(error.what());
     const litkit::FileLoc& place = error.location();
     instance.attr("file") = place.file.empty() ? py::object(py::none()) : py::str(place.file);
+    if (const auto* io = dynamic_cast<const litkit::IoError*>(&error); io && place.file.empty())
+        instance.attr("file") = io->path();  // the file that could not be read
     instance.attr("line") = or_none(place.line);
     instance.attr("column") = or_none(place.column);
     instance.attr("message") = diagnostics.empty() ? message_of(error) : diagnostics.front().message;
