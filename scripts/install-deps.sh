@@ -26,6 +26,10 @@ packages=(
   libimgui-dev libstb-dev xdotool x11-apps
   # test_teach parses explain --json with Python's json module.
   python3
+  # The Python module (python/, docs/python.md): pybind11 and NumPy for
+  # Debian's python3, its headers; pytest and Pillow (which decodes the CLI's
+  # PNGs independently) for its tests.
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pil
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)

@@ -12,8 +12,17 @@ which carries ``file``, ``line``, ``column`` and ``message``.
 """
 
 import os
+import sys as _sys
 import warnings as _warnings
 from collections.abc import Mapping
+
+try:
+    import numpy as _numpy  # noqa: F401  (pictures are NumPy arrays)
+except ImportError as _missing:
+    raise ImportError(
+        f"litkit needs NumPy, which {_sys.executable} cannot import: run the python3 litkit "
+        "was built for (Debian's /usr/bin/python3 with python3-numpy; docs/python.md) or "
+        "install NumPy for this one") from _missing
 
 from . import _litkit, _toml
 from ._image import Image
