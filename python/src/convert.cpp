@@ -30,7 +30,8 @@ int checked_size(const char* what, int pixels) {
 litkit::Reflection reflection_from(const std::string& name) {
     if (const auto reflection = litkit::parse_reflection(name)) return *reflection;
     std::vector<std::string_view> known;
-    for (const litkit::ReflectionModel& model : litkit::reflection_models()) known.push_back(model.name);
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        known.push_back(model.name);
     unknown("reflection model", name, known);
 }
 

@@ -7,7 +7,6 @@
 #include <pybind11/pybind11.h>
 
 #include <glm/vec3.hpp>
-
 #include <optional>
 #include <string>
 

@@ -41,15 +41,16 @@ void raise(PyObject* type, const litkit::Error& error,
         instance.attr("file") = io->path();  // the file that could not be read
     instance.attr("line") = or_none(place.line);
     instance.attr("column") = or_none(place.column);
-    instance.attr("message") = diagnostics.empty() ? message_of(error) : diagnostics.front().message;
+    instance.attr("message") =
+        diagnostics.empty() ? message_of(error) : diagnostics.front().message;
     instance.attr("diagnostics") = py::cast(diagnostics);
     instance.attr("warnings") = py::cast(warnings);
     PyErr_SetObject(type, instance.ptr());
 }
 
 PyObject* new_type(py::module_& module, const char* name, PyObject* base, const char* doc) {
-    PyObject* type = PyErr_NewExceptionWithDoc((std::string("litkit.") + name).c_str(), doc, base,
-                                               nullptr);
+    PyObject* type =
+        PyErr_NewExceptionWithDoc((std::string("litkit.") + name).c_str(), doc, base, nullptr);
     if (!type) throw py::error_already_set();
     module.add_object(name, py::handle(type));  // add_object takes a new reference
     Py_INCREF(type);                            // and this one is ours, for good

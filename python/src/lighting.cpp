@@ -16,10 +16,14 @@ const char* type_of(const litkit::Light& light) {
     return std::visit(
         [](const auto& kind) -> const char* {
             using Kind = std::decay_t<decltype(kind)>;
-            if constexpr (std::is_same_v<Kind, litkit::AmbientLight>) return "ambient";
-            else if constexpr (std::is_same_v<Kind, litkit::DirectionalLight>) return "directional";
-            else if constexpr (std::is_same_v<Kind, litkit::PointLight>) return "point";
-            else return "spot";
+            if constexpr (std::is_same_v<Kind, litkit::AmbientLight>)
+                return "ambient";
+            else if constexpr (std::is_same_v<Kind, litkit::DirectionalLight>)
+                return "directional";
+            else if constexpr (std::is_same_v<Kind, litkit::PointLight>)
+                return "point";
+            else
+                return "spot";
         },
         light.kind);
 }
@@ -101,8 +105,16 @@ void bind_material(py::module_& module) {
                                  "Surface coefficients; color per channel in 0-1.")
         .def(py::init([](glm::vec3 color, float ka, float kd, float ks, float shininess,
                          float sigma, float roughness, float f0, float bands, float minnaert_k) {
-                 return litkit::Material{color, ka, kd, ks, shininess, sigma, roughness, f0, bands,
-                                         minnaert_k};
+                 return litkit::Material{.color = color,
+                                         .ka = ka,
+                                         .kd = kd,
+                                         .ks = ks,
+                                         .shininess = shininess,
+                                         .sigma = sigma,
+                                         .roughness = roughness,
+                                         .f0 = f0,
+                                         .bands = bands,
+                                         .minnaert_k = minnaert_k};
              }),
              py::kw_only(), py::arg("color") = defaults.color, py::arg("ka") = defaults.ka,
              py::arg("kd") = defaults.kd, py::arg("ks") = defaults.ks,
@@ -162,7 +174,8 @@ void bind_lighting(py::module_& module) {
             const litkit::ShadeTerms terms = litkit::shade_terms(
                 reflection_from(reflection), material, lights, position, normal, eye);
             py::list per_light;
-            for (const litkit::LightTerms& light : terms.lights) per_light.append(terms_dict(light));
+            for (const litkit::LightTerms& light : terms.lights)
+                per_light.append(terms_dict(light));
             py::dict d;
             d["lights"] = per_light;
             d["total"] = terms.total;

@@ -36,7 +36,7 @@ py::array render_once(const litkit::Scene& scene, const Overrides& overrides, in
 
 // A scene prepared once (meshes, normals) and drawn many times.
 class PreparedScene {
-public:
+  public:
     PreparedScene(const litkit::Scene& scene, int threads) : scene_(scene) {
         const litkit::RenderOptions options = options_for(threads);
         py::gil_scoped_release unlocked;
@@ -87,7 +87,7 @@ public:
         return renderer_->thread_count();
     }
 
-private:
+  private:
     std::mutex mutex_;
     litkit::Scene scene_;  // as last checked
     std::unique_ptr<litkit::Renderer> renderer_;
@@ -104,8 +104,8 @@ void bind_render(py::module_& module) {
     module.def(
         "_render",
         [](const litkit::Scene& scene, std::optional<std::string> reflection,
-           std::optional<std::string> shading, std::optional<int> width,
-           std::optional<int> height, int threads) {
+           std::optional<std::string> shading, std::optional<int> width, std::optional<int> height,
+           int threads) {
             return render_once(scene, overrides(reflection, shading, width, height), threads);
         },
         py::arg("scene"), py::kw_only(), py::arg("reflection") = py::none(),
@@ -135,10 +135,12 @@ void bind_render(py::module_& module) {
         [](py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> pixels) {
             if (pixels.ndim() != 3 || pixels.shape(2) != 3 || pixels.shape(0) < 1 ||
                 pixels.shape(1) < 1) {
-                throw litkit::ArgumentError("encode_png: expected an array of shape (height, "
-                                            "width, 3) with height, width >= 1");
+                throw litkit::ArgumentError(
+                    "encode_png: expected an array of shape (height, "
+                    "width, 3) with height, width >= 1");
             }
-            litkit::Image image(static_cast<int>(pixels.shape(1)), static_cast<int>(pixels.shape(0)));
+            litkit::Image image(static_cast<int>(pixels.shape(1)),
+                                static_cast<int>(pixels.shape(0)));
             std::copy(pixels.data(), pixels.data() + image.rgb.size(), image.rgb.begin());
             return py::bytes(litkit::encode_png(image));
         },

@@ -40,12 +40,13 @@ void bind_diagnostic(py::module_& module) {
                                    if (d.location.column == 0) return py::none();
                                    return py::int_(d.location.column);
                                })
-        .def_property_readonly("severity",
-                               [](const litkit::Diagnostic& d) { return severity_name(d.severity); })
+        .def_property_readonly(
+            "severity", [](const litkit::Diagnostic& d) { return severity_name(d.severity); })
         .def_readonly("message", &litkit::Diagnostic::message)
         .def("__str__", &litkit::Diagnostic::to_string)
         .def("__repr__", [](const litkit::Diagnostic& d) {
-            return "<litkit.Diagnostic " + py::repr(py::str(d.to_string())).cast<std::string>() + ">";
+            return "<litkit.Diagnostic " + py::repr(py::str(d.to_string())).cast<std::string>() +
+                   ">";
         });
 }
 
@@ -61,7 +62,8 @@ void bind_parts(py::module_& module) {
         .def_readwrite("fov", &litkit::Observer::fov_degrees, "Vertical field of view, degrees")
         .def_readwrite("near", &litkit::Observer::near)
         .def_readwrite("far", &litkit::Observer::far);
-    py::class_<litkit::OutputSettings>(module, "Output", "The picture's size, background and gamma.")
+    py::class_<litkit::OutputSettings>(module, "Output",
+                                       "The picture's size, background and gamma.")
         .def_readwrite("width", &litkit::OutputSettings::width)
         .def_readwrite("height", &litkit::OutputSettings::height)
         .def_readwrite("background", &litkit::OutputSettings::background)
@@ -105,8 +107,10 @@ void bind_scene(py::module_& module) {
             },
             "How vertex normals weight faces (mean, area, angle, max, file), or None")
         .def_readwrite("crease_angle", &litkit::Scene::crease_angle_degrees)
-        .def_property_readonly("light_count", [](const litkit::Scene& s) { return s.lights.size(); })
-        .def_property_readonly("object_count", [](const litkit::Scene& s) { return s.objects.size(); })
+        .def_property_readonly("light_count",
+                               [](const litkit::Scene& s) { return s.lights.size(); })
+        .def_property_readonly("object_count",
+                               [](const litkit::Scene& s) { return s.objects.size(); })
         .def_readonly("warnings", &litkit::Scene::warnings, "What loading found surely unintended")
         .def(
             "to_toml",
@@ -139,8 +143,7 @@ void bind_scene(py::module_& module) {
         py::arg("text"), py::arg("name"));
     module.def("default_scene", &litkit::default_scene,
                "The built-in default scene: one cube, one point light, Phong and Phong.");
-    module.def("default_scene_toml",
-               [] { return std::string(litkit::default_scene_toml()); });
+    module.def("default_scene_toml", [] { return std::string(litkit::default_scene_toml()); });
     module.def(
         "_check_scene",
         [](const litkit::Scene& scene) {

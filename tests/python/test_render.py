@@ -153,3 +153,16 @@ def test_the_default_scene_text_is_the_default_scene():
     text_scene = litkit.loads(litkit.default_scene_toml())
     assert np.array_equal(litkit.render(text_scene, width=80, height=60),
                           litkit.render(litkit.default_scene(), width=80, height=60))
+
+
+def test_a_scene_without_lighting_uses_phong_as_the_clis_yes(cli_render, tmp_path):
+    scene = litkit.load(EXAMPLES / "sphere.toml").to_dict()
+    del scene["lighting"]
+    path = tmp_path / "no-lighting.toml"
+    path.write_text(litkit.dumps(scene))
+    loaded = litkit.load(path)
+    assert loaded.reflection is None and loaded.shading is None
+    img = litkit.render(loaded, width=160, height=120)
+    assert np.array_equal(img, cli_render([path], *SIZE))
+    assert np.array_equal(img, litkit.render(loaded, reflection="phong", shading="phong",
+                                             width=160, height=120))
