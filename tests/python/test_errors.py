@@ -203,3 +203,14 @@ def test_loading_nothing_is_an_argument_error():
 def test_examples_all_check_clean():
     for path in sorted(EXAMPLES.glob("*.toml")):
         litkit.check(path)  # raises on any error
+
+
+def test_the_triangle_budget_is_the_clis():
+    path = EXAMPLES / "teapot.toml"
+    with pytest.raises(litkit.SceneError) as raised:
+        litkit.load(path, max_triangles=100)
+    result = run_cli("check", path, "--max-triangles", 100, check=False)
+    assert result.returncode == 2
+    assert str(raised.value).splitlines() == [
+        line for line in result.stderr.splitlines() if "error: " in line]
+    assert "triangle" in raised.value.message
