@@ -74,3 +74,26 @@ def test_without_a_release_the_counter_stands_still(worker):
         total += i
     after = worker["count"]
     assert after == before
+
+
+def test_renders_in_several_threads_at_once_give_the_same_pictures():
+    # With the GIL released, these run at the same time in the library: each
+    # call has its own renderer, and one Renderer draws one frame at a time.
+    from concurrent.futures import ThreadPoolExecutor
+
+    import numpy as np
+
+    scene = litkit.default_scene()
+    shared = litkit.Renderer(scene, threads=1)
+    jobs = [("phong", "gouraud"), ("lambert", "flat"), ("blinn-phong", "phong"),
+            ("gooch", "faceted")] * 2
+    expected = [litkit.render(scene, reflection=r, shading=s, width=320, height=240, threads=1)
+                for r, s in jobs]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        one_shot = list(pool.map(lambda job: litkit.render(
+            scene, reflection=job[0], shading=job[1], width=320, height=240, threads=1), jobs))
+        through_one = list(pool.map(lambda job: shared.render(
+            reflection=job[0], shading=job[1], width=320, height=240), jobs))
+    for want, got, got_shared in zip(expected, one_shot, through_one):
+        assert np.array_equal(want, got)
+        assert np.array_equal(want, got_shared)
