@@ -30,7 +30,8 @@ if(Python3_FOUND AND Python3_NumPy_FOUND)
     endif()
 endif()
 if(LITKIT_PYTHON_FOUND)
-    message(STATUS "litkit: Python module for ${Python3_EXECUTABLE} (NumPy ${Python3_NumPy_VERSION}, pybind11 ${pybind11_VERSION})")
+    message(STATUS "litkit: Python module for ${Python3_EXECUTABLE} "
+                   "(NumPy ${Python3_NumPy_VERSION}, pybind11 ${pybind11_VERSION})")
 else()
     message(STATUS "litkit: no Python module: pybind11, or a Python 3 with NumPy and its headers, "
                    "not found (scripts/install-deps.sh installs them)")

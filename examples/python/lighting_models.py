@@ -64,8 +64,9 @@ side
 
 # %% [markdown]
 # One surface point by hand: a point light 2 units above the point, whose
-# normal leans 37 degrees away from it; the eye 3 units away. `shade` gives the colour before clamping and gamma;
-# `shade_terms` the working (L, f, D, S per light).
+# normal leans 37 degrees away from it; the eye 3 units away. `shade` gives
+# the colour before clamping and gamma; `shade_terms` the working (L, f, D, S
+# per light).
 
 # %%
 material = litkit.Material(color=(0.8, 0.3, 0.2), kd=0.7, ks=0.5, shininess=32)

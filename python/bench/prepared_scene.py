@@ -41,7 +41,8 @@ prepared = median_ms(lambda frame: renderer.render(moved(frame), **size))
 same = median_ms(lambda frame: renderer.render(**size))
 print(f"scene: {path}, 640x480, {renderer.triangle_count} triangles, "
       f"{renderer.thread_count} threads, load {os.getloadavg()[0]:.1f}")
-print(f"litkit.render (mesh built every time):  median {one_shot[0]:.1f} ms, min {one_shot[1]:.1f} ms")
-print(f"Renderer.render(scene) with new observer: median {prepared[0]:.1f} ms, min {prepared[1]:.1f} ms")
-print(f"Renderer.render() (nothing to check):     median {same[0]:.1f} ms, min {same[1]:.1f} ms")
+for label, (median, least) in [("litkit.render (mesh built every time)", one_shot),
+                               ("Renderer.render(scene), new observer", prepared),
+                               ("Renderer.render() (nothing to check)", same)]:
+    print(f"{label:38s} median {median:.1f} ms, min {least:.1f} ms")
 print(f"meshes built by the Renderer: {renderer.mesh_builds}")

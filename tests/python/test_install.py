@@ -22,17 +22,18 @@ def install_dir():
 
 
 def test_installed_package_imports_and_renders(tmp_path):
-    INSTALL_DIR = install_dir()
+    site = install_dir()
     prefix = tmp_path / "prefix"
-    subprocess.run([os.environ.get("LITKIT_CMAKE", "cmake"), "--install", str(BUILD_DIR), "--prefix", str(prefix),
+    cmake = os.environ.get("LITKIT_CMAKE", "cmake")
+    subprocess.run([cmake, "--install", str(BUILD_DIR), "--prefix", str(prefix),
                     "--component", "python"], check=True, capture_output=True)
-    package = prefix / INSTALL_DIR / "litkit"
+    package = prefix / site / "litkit"
     assert (package / "__init__.py").is_file()
-    environment = dict(os.environ, PYTHONPATH=str(prefix / INSTALL_DIR))
-    result = subprocess.run(
-        [sys.executable, "-c",
-         "import litkit; print(litkit.__file__); print(litkit.render(litkit.default_scene()).shape)"],
-        check=True, capture_output=True, text=True, env=environment, cwd=tmp_path)
+    environment = dict(os.environ, PYTHONPATH=str(prefix / site))
+    program = ("import litkit; print(litkit.__file__); "
+               "print(litkit.render(litkit.default_scene()).shape)")
+    result = subprocess.run([sys.executable, "-c", program], check=True, capture_output=True,
+                            text=True, env=environment, cwd=tmp_path)
     where, shape = result.stdout.splitlines()
     assert pathlib.Path(where).parent == package
     assert shape == "(600, 800, 3)"
