@@ -26,6 +26,11 @@ packages=(
   libimgui-dev libstb-dev xdotool x11-apps
   # test_teach parses explain --json with Python's json module.
   python3
+  # The Python module (python/, docs/python.md): pybind11 and NumPy for
+  # Debian's python3, its headers; for its tests pytest, Pillow (which decodes
+  # the CLI's PNGs independently) and IPython (whose display formatter shows
+  # that pictures display inline in Jupyter).
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pil python3-ipython
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)

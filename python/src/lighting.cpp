@@ -1,0 +1,201 @@
+// The per-point evaluator: Material, Light, shade() and shade_terms(), for
+// checking one point's arithmetic by hand (docs/spec.md §4).
+#include <pybind11/stl.h>
+
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "convert.hpp"
+
+namespace litkit_python {
+
+namespace {
+
+const char* type_of(const litkit::Light& light) {
+    return std::visit(
+        [](const auto& kind) -> const char* {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (std::is_same_v<Kind, litkit::AmbientLight>)
+                return "ambient";
+            else if constexpr (std::is_same_v<Kind, litkit::DirectionalLight>)
+                return "directional";
+            else if constexpr (std::is_same_v<Kind, litkit::PointLight>)
+                return "point";
+            else
+                return "spot";
+        },
+        light.kind);
+}
+
+// A light from the keys a scene file's [[lights]] entry has (colour 0-1 here,
+// as litkit::Light holds it). Keys that the type does not have must be left out.
+litkit::Light make_light(const std::string& type, std::optional<glm::vec3> position,
+                         std::optional<glm::vec3> direction, glm::vec3 color, float intensity,
+                         std::optional<glm::vec3> attenuation, std::optional<float> cutoff,
+                         std::optional<float> exponent, std::optional<float> penumbra) {
+    auto refuse = [&](const char* key, bool given) {
+        if (given) throw litkit::ArgumentError("Light: a " + type + " light has no " + key);
+    };
+    auto need = [&](const char* key, bool given) {
+        if (!given) throw litkit::ArgumentError("Light: a " + type + " light needs a " + key);
+    };
+    litkit::Light light;
+    light.color = color;
+    light.intensity = intensity;
+    const bool spot = type == "spot";
+    if (!spot) {
+        refuse("cutoff", cutoff.has_value());
+        refuse("exponent", exponent.has_value());
+        refuse("penumbra", penumbra.has_value());
+    }
+    if (type == "ambient") {
+        refuse("position", position.has_value());
+        refuse("direction", direction.has_value());
+        refuse("attenuation", attenuation.has_value());
+        light.kind = litkit::AmbientLight{};
+    } else if (type == "directional") {
+        refuse("position", position.has_value());
+        refuse("attenuation", attenuation.has_value());
+        need("direction", direction.has_value());
+        light.kind = litkit::DirectionalLight{*direction};
+    } else if (type == "point") {
+        refuse("direction", direction.has_value());
+        need("position", position.has_value());
+        litkit::PointLight point{*position};
+        if (attenuation) point.attenuation = *attenuation;
+        light.kind = point;
+    } else if (spot) {
+        need("position", position.has_value());
+        need("direction", direction.has_value());
+        litkit::SpotLight cone;
+        cone.position = *position;
+        cone.direction = *direction;
+        if (attenuation) cone.attenuation = *attenuation;
+        if (cutoff) cone.cutoff_degrees = *cutoff;
+        if (exponent) cone.exponent = *exponent;
+        if (penumbra) cone.penumbra = *penumbra;
+        light.kind = cone;
+    } else {
+        throw litkit::ArgumentError("unknown light type '" + type +
+                                    "'; expected one of: ambient, directional, point, spot");
+    }
+    return light;
+}
+
+py::dict terms_dict(const litkit::LightTerms& terms) {
+    py::dict intermediates;
+    for (const auto& [name, value] : terms.intermediates) intermediates[py::str(name)] = value;
+    py::dict d;
+    d["ambient"] = terms.ambient;
+    d["to_light"] = terms.to_light;
+    d["factor"] = terms.factor;
+    d["diffuse"] = terms.diffuse;
+    d["specular"] = terms.specular;
+    d["weight"] = terms.weight;
+    d["color"] = terms.color;
+    d["intermediates"] = intermediates;
+    d["contribution"] = terms.contribution;
+    return d;
+}
+
+void bind_material(py::module_& module) {
+    const litkit::Material defaults;
+    py::class_<litkit::Material>(module, "Material",
+                                 "Surface coefficients; color per channel in 0-1.")
+        .def(py::init([](glm::vec3 color, float ka, float kd, float ks, float shininess,
+                         float sigma, float roughness, float f0, float bands, float minnaert_k) {
+                 return litkit::Material{.color = color,
+                                         .ka = ka,
+                                         .kd = kd,
+                                         .ks = ks,
+                                         .shininess = shininess,
+                                         .sigma = sigma,
+                                         .roughness = roughness,
+                                         .f0 = f0,
+                                         .bands = bands,
+                                         .minnaert_k = minnaert_k};
+             }),
+             py::kw_only(), py::arg("color") = defaults.color, py::arg("ka") = defaults.ka,
+             py::arg("kd") = defaults.kd, py::arg("ks") = defaults.ks,
+             py::arg("shininess") = defaults.shininess, py::arg("sigma") = defaults.sigma,
+             py::arg("roughness") = defaults.roughness, py::arg("f0") = defaults.f0,
+             py::arg("bands") = defaults.bands, py::arg("minnaert_k") = defaults.minnaert_k)
+        .def_readwrite("color", &litkit::Material::color)
+        .def_readwrite("ka", &litkit::Material::ka)
+        .def_readwrite("kd", &litkit::Material::kd)
+        .def_readwrite("ks", &litkit::Material::ks)
+        .def_readwrite("shininess", &litkit::Material::shininess)
+        .def_readwrite("sigma", &litkit::Material::sigma)
+        .def_readwrite("roughness", &litkit::Material::roughness)
+        .def_readwrite("f0", &litkit::Material::f0)
+        .def_readwrite("bands", &litkit::Material::bands)
+        .def_readwrite("minnaert_k", &litkit::Material::minnaert_k);
+}
+
+void bind_light(py::module_& module) {
+    py::class_<litkit::Light>(module, "Light",
+                              "A light: type ambient, directional, point or spot; color 0-1.")
+        .def(py::init(&make_light), py::arg("type"), py::kw_only(),
+             py::arg("position") = py::none(), py::arg("direction") = py::none(),
+             py::arg("color") = glm::vec3(1.0f), py::arg("intensity") = 1.0f,
+             py::arg("attenuation") = py::none(), py::arg("cutoff") = py::none(),
+             py::arg("exponent") = py::none(), py::arg("penumbra") = py::none())
+        .def_property_readonly("type", &type_of)
+        .def_readwrite("color", &litkit::Light::color)
+        .def_readwrite("intensity", &litkit::Light::intensity)
+        .def("__repr__", [](const litkit::Light& light) {
+            return std::string("<litkit.Light ") + type_of(light) + ">";
+        });
+}
+
+}  // namespace
+
+void bind_lighting(py::module_& module) {
+    bind_material(module);
+    bind_light(module);
+    module.def(
+        "shade",
+        [](const std::string& reflection, const litkit::Material& material,
+           const std::vector<litkit::Light>& lights, const glm::vec3& position,
+           const glm::vec3& normal, const glm::vec3& eye) {
+            return litkit::shade(reflection_from(reflection), material, lights, position, normal,
+                                 eye);
+        },
+        py::arg("reflection"), py::arg("material"), py::arg("lights"), py::arg("position"),
+        py::arg("normal"), py::arg("eye"),
+        "The colour I at one surface point before clamping and gamma (docs/spec.md §4). "
+        "normal must be unit length (within 1e-3), else litkit.ArgumentError.");
+    module.def(
+        "shade_terms",
+        [](const std::string& reflection, const litkit::Material& material,
+           const std::vector<litkit::Light>& lights, const glm::vec3& position,
+           const glm::vec3& normal, const glm::vec3& eye) {
+            const litkit::ShadeTerms terms = litkit::shade_terms(
+                reflection_from(reflection), material, lights, position, normal, eye);
+            py::list per_light;
+            for (const litkit::LightTerms& light : terms.lights)
+                per_light.append(terms_dict(light));
+            py::dict d;
+            d["lights"] = per_light;
+            d["total"] = terms.total;
+            return d;
+        },
+        py::arg("reflection"), py::arg("material"), py::arg("lights"), py::arg("position"),
+        py::arg("normal"), py::arg("eye"),
+        "shade() with its working: each light's L, f, D, S and the model's intermediate values.");
+    module.def("reflection_models", [] {
+        std::vector<std::string> names;
+        for (const litkit::ReflectionModel& model : litkit::reflection_models())
+            names.emplace_back(model.name);
+        return names;
+    });
+    module.def("shading_models", [] {
+        std::vector<std::string> names;
+        for (int i = 0; i < litkit::shading_count; ++i)
+            names.emplace_back(litkit::to_string(static_cast<litkit::Shading>(i)));
+        return names;
+    });
+}
+
+}  // namespace litkit_python
