@@ -13,7 +13,7 @@
 #include "codegen/gl_scene.hpp"
 #include "codegen/glsl_expr.hpp"
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/glsl.hpp"
 
 namespace litkit {

@@ -17,7 +17,7 @@
 #include <optional>
 #include <string>
 
-#include "litkit/convex.hpp"
+#include "geometry/convex.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/validate_internal.hpp"
 
