@@ -11,6 +11,7 @@
 //             (Gouraud) or one colour (flat)
 #include "litkit/render.hpp"
 #include "litkit/error.hpp"
+#include "litkit/validate.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -674,8 +675,21 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     }
 }
 
+namespace {
+
+// The renderer's preconditions (render.hpp), checked before anything is built.
+void check_preconditions(const Scene& scene, const RenderOptions& options) {
+    if (options.threads < 0 || options.threads > max_render_threads)
+        throw ArgumentError("RenderOptions::threads must be 0 (one per hardware thread) to " +
+                            std::to_string(max_render_threads) + ", found " +
+                            std::to_string(options.threads));
+    check_renderable(scene);
+}
+
+}  // namespace
+
 Renderer::Renderer(const Scene& scene, RenderOptions options)
-    : impl_(std::make_unique<Impl>(scene, options)) {
+    : impl_((check_preconditions(scene, options), std::make_unique<Impl>(scene, options))) {
     impl_->prepare();
 }
 
@@ -715,6 +729,7 @@ void Renderer::render_into(Image& image) {
 }
 
 void Renderer::update(const Scene& scene) {
+    check_renderable(scene);  // before anything of the old scene is replaced
     Impl& impl = *impl_;
     bool same = scene.objects.size() == impl.scene.objects.size();
     for (std::size_t o = 0; same && o < scene.objects.size(); ++o)

@@ -20,6 +20,7 @@
 
 #include "codegen/gl_scene.hpp"
 #include "litkit/glsl.hpp"
+#include "litkit/validate.hpp"
 
 namespace litkit {
 
@@ -135,6 +136,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
     : GlRenderer(scene, options, CurrentContext{}, true) {}
 
 void GlRenderer::update(const Scene& scene) {
+    check_renderable(scene);  // litkit/validate.hpp: the renderers' preconditions
     Impl& gl = *impl_;
     // What the programs and the uploaded meshes depend on: the objects'
     // geometry and models, and how many lights the shaders hold.
@@ -174,6 +176,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
 
 GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
+    check_renderable(scene);  // before any OpenGL is set up
     Impl& gl = *impl_;
     if (headless) {
         require_gl_libraries();

@@ -102,6 +102,11 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
             } else if constexpr (std::is_same_v<S, TeapotShape>) {
                 text += "type = \"teapot\"\nsize = " + number(shape.size) +
                         "\nsubdivisions = " + std::to_string(shape.subdivisions) + "\n";
+            } else if constexpr (std::is_same_v<S, MeshDataShape>) {
+                throw ArgumentError(
+                    (object.name.empty() ? std::string("an object") : "object '" + object.name + "'") +
+                    " has an in-memory mesh, which a scene file cannot hold: write it as an OBJ "
+                    "file (litkit::mesh_to_obj) and use a MeshFileShape that names the file");
             } else {
                 // Relative to the written file where it can be, else absolute.
                 std::filesystem::path file = std::filesystem::absolute(shape.file);

@@ -1,0 +1,332 @@
+// The C++ API as a program calls it (issue 15): the renderers' preconditions
+// (check_renderable), meshes given in memory (MeshDataShape), and the
+// inside-out warning for closed meshes whose faces wind clockwise.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "litkit/gl_renderer.hpp"
+#include "litkit/litkit.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path octahedron_file = fs::path(LITKIT_SOURCE_DIR) / "examples/meshes/octahedron.obj";
+const fs::path inside_out_file = fs::path(LITKIT_TEST_DATA) / "obj/inside_out.obj";
+
+// The octahedron of examples/meshes/octahedron.obj, typed in again: corners
+// at distance 1 on each axis, faces counter-clockwise seen from outside.
+litkit::Mesh octahedron() {
+    litkit::Mesh mesh;
+    mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    mesh.triangles = {{4, 0, 2}, {0, 5, 2}, {5, 1, 2}, {1, 4, 2},
+                      {0, 4, 3}, {5, 0, 3}, {1, 5, 3}, {4, 1, 3}};
+    return mesh;
+}
+
+litkit::Scene scene_with(litkit::Shape shape) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.width = 160;
+    scene.output.height = 120;
+    scene.objects.at(0).shape = std::move(shape);
+    scene.objects.at(0).rotation_degrees = {-20.0f, 60.0f, 15.0f};
+    return scene;
+}
+
+// Renders, expecting SceneError, and returns its message.
+std::string render_error(const litkit::Scene& scene) {
+    try {
+        litkit::render(scene);
+    } catch (const litkit::SceneError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "render() accepted the scene";
+    return {};
+}
+
+bool has_warning(const litkit::Scene& scene, const std::string& text) {
+    for (const litkit::Diagnostic& warning : scene.warnings)
+        if (warning.message.find(text) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+// --- preconditions ----------------------------------------------------------
+
+TEST(Preconditions, ShapeParametersBuiltInCodeAreRefusedWithTheValue) {
+    litkit::Scene scene = scene_with(litkit::SphereShape{.radius = -1.0f});
+    const std::string message = render_error(scene);
+    EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
+    EXPECT_NE(message.find("radius must be > 0, found -1"), std::string::npos) << message;
+}
+
+TEST(Preconditions, NanOrInfiniteCameraIsRefused) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.observer.position.y = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_NE(render_error(scene).find("observer: position must be finite"), std::string::npos);
+    scene = litkit::default_scene();
+    scene.observer.look_at.x = std::numeric_limits<float>::infinity();
+    EXPECT_NE(render_error(scene).find("observer: look_at must be finite"), std::string::npos);
+    scene = litkit::default_scene();
+    scene.observer.fov_degrees = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_NE(render_error(scene).find("fov must be in (0, 180)"), std::string::npos);
+}
+
+TEST(Preconditions, ImageSizeOutOfRangeIsRefused) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.width = 0;
+    EXPECT_NE(render_error(scene).find("width must be 1–16384, found 0"), std::string::npos);
+    scene = litkit::default_scene();
+    scene.output.height = 100000;
+    EXPECT_NE(render_error(scene).find("height must be 1–16384, found 100000"), std::string::npos);
+}
+
+TEST(Preconditions, EveryProblemIsListedAndEachIsALitkitError) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.width = -5;
+    scene.objects.at(0).material.kd = 2.0f;
+    scene.lights.at(0).light.intensity = std::numeric_limits<float>::infinity();
+    try {
+        litkit::Renderer renderer(scene);
+        FAIL() << "the renderer accepted the scene";
+    } catch (const litkit::Error& error) {
+        const auto* scene_error = dynamic_cast<const litkit::SceneError*>(&error);
+        ASSERT_NE(scene_error, nullptr);
+        EXPECT_EQ(scene_error->diagnostics().size(), 3u) << error.what();
+    }
+}
+
+TEST(Preconditions, ThreadCountOutOfRangeIsAnArgumentError) {
+    litkit::RenderOptions options;
+    options.threads = -1;
+    EXPECT_THROW(litkit::Renderer(litkit::default_scene(), options), litkit::ArgumentError);
+    options.threads = litkit::max_render_threads + 1;
+    EXPECT_THROW(litkit::render(litkit::default_scene(), options), litkit::ArgumentError);
+}
+
+TEST(Preconditions, AFailedUpdateKeepsTheSceneTheRendererHad) {
+    litkit::Scene scene = scene_with(litkit::CubeShape{});
+    litkit::Renderer renderer(scene);
+    const litkit::Image before = renderer.render();
+    litkit::Scene bad = scene;
+    bad.observer.up = {0.0f, 0.0f, 0.0f};
+    EXPECT_THROW(renderer.update(bad), litkit::SceneError);
+    EXPECT_EQ(renderer.render().rgb, before.rgb);
+}
+
+TEST(Preconditions, TheOpenGlBackendChecksThemBeforeAnyOpenGl) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.height = 0;
+    // SceneError, not GlError: the check comes before a context is made, so
+    // this holds on a machine without OpenGL too.
+    EXPECT_THROW(litkit::GlRenderer renderer(scene), litkit::SceneError);
+}
+
+TEST(Preconditions, RelationsBetweenEntitiesAreValidateScenesNotTheRenderers) {
+    // Two cubes in one place break spec §6 (validate_scene says so) but are
+    // drawable: render() does not repeat the overlap checks.
+    litkit::Scene scene = scene_with(litkit::CubeShape{});
+    scene.objects.push_back(scene.objects.front());
+    bool overlap_reported = false;
+    for (const litkit::Diagnostic& d : litkit::validate_scene(scene))
+        overlap_reported |= d.message.find("overlaps") != std::string::npos;
+    EXPECT_TRUE(overlap_reported);
+    EXPECT_NO_THROW(litkit::render(scene));
+}
+
+TEST(Preconditions, ValuesSetInCodeAreValidatedToo) {
+    // validate_scene now finds non-finite values a file cannot hold.
+    litkit::Scene scene = litkit::default_scene();
+    scene.objects.at(0).position.z = std::numeric_limits<float>::quiet_NaN();
+    bool found = false;
+    for (const litkit::Diagnostic& d : litkit::validate_scene(scene))
+        found |= d.message.find("position must be finite") != std::string::npos;
+    EXPECT_TRUE(found);
+}
+
+// --- meshes in memory -------------------------------------------------------
+
+TEST(MeshData, DrawsExactlyAsTheSameMeshReadFromAFile) {
+    const litkit::Scene from_memory = scene_with(litkit::MeshDataShape(octahedron()));
+    const litkit::Scene from_file = scene_with(litkit::MeshFileShape{octahedron_file});
+    const litkit::Image expected = litkit::render(from_file);
+    const litkit::Image image = litkit::render(from_memory);
+    EXPECT_EQ(image.rgb, expected.rgb);
+    int covered = 0;
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+        covered += image.rgb[i] != from_file.output.background[0];
+    EXPECT_GT(covered, 500) << "the octahedron is drawn";
+}
+
+TEST(MeshData, OpenGlDrawsItAsItDrawsTheFile) {
+    const litkit::Scene from_memory = scene_with(litkit::MeshDataShape(octahedron()));
+    const litkit::Scene from_file = scene_with(litkit::MeshFileShape{octahedron_file});
+    try {
+        litkit::GlRenderer memory(from_memory);
+        litkit::GlRenderer file(from_file);
+        EXPECT_EQ(memory.triangle_count(), 8u);
+        EXPECT_EQ(memory.render().rgb, file.render().rgb);
+    } catch (const litkit::GlError& error) {
+        GTEST_SKIP() << "no OpenGL here: " << error.what();
+    }
+}
+
+TEST(MeshData, ExportedProgramEmbedsTheSameVerticesAsForTheFile) {
+    const fs::path root = fs::temp_directory_path() / ("litkit-api-" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    litkit::export_cpp(scene_with(litkit::MeshDataShape(octahedron())), root / "memory", "demo", "s");
+    litkit::export_cpp(scene_with(litkit::MeshFileShape{octahedron_file}), root / "file", "demo", "s");
+    auto text = [](const fs::path& path) {
+        std::ifstream in(path);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    std::string memory = text(root / "memory/main.cpp");
+    // The one difference: the comment naming each object's shape type.
+    const std::size_t type = memory.find("\"cube\": mesh data, 8 triangles");
+    ASSERT_NE(type, std::string::npos);
+    memory.replace(type, std::string("\"cube\": mesh data").size(), "\"cube\": mesh");
+    const bool same = memory == text(root / "file/main.cpp");  // not printed: 40 kB
+    EXPECT_TRUE(same);
+    EXPECT_FALSE(litkit::export_glsl(scene_with(litkit::MeshDataShape(octahedron())), root / "glsl").empty());
+    fs::remove_all(root);
+}
+
+TEST(MeshData, IsValidatedAsAMeshFileIs) {
+    struct Case {
+        litkit::Mesh mesh;
+        std::string message;
+    };
+    std::vector<Case> cases;
+    cases.push_back({litkit::Mesh{}, "the mesh has no triangles"});
+    litkit::Mesh nan = octahedron();
+    nan.positions[3].y = std::numeric_limits<float>::quiet_NaN();
+    cases.push_back({nan, "position 3 is not finite"});
+    litkit::Mesh beyond = octahedron();
+    beyond.triangles[5][1] = 6;
+    cases.push_back({beyond, "triangle 5 refers to position 6, but the mesh has 6 positions"});
+    for (const Case& c : cases) {
+        const litkit::Scene scene = scene_with(litkit::MeshDataShape(c.mesh));
+        EXPECT_EQ(litkit::check_mesh_data(c.mesh).rfind(c.message, 0), 0u)
+            << litkit::check_mesh_data(c.mesh);
+        bool validated = false;
+        for (const litkit::Diagnostic& d : litkit::validate_scene(scene))
+            validated |= d.severity == litkit::Severity::Error &&
+                         d.message.find("in-memory mesh: " + c.message) != std::string::npos;
+        EXPECT_TRUE(validated) << c.message;
+        EXPECT_NE(render_error(scene).find(c.message), std::string::npos) << c.message;
+        EXPECT_THROW(litkit::object_mesh(scene.objects[0]), litkit::ArgumentError);
+    }
+    EXPECT_NE(render_error(scene_with(litkit::MeshDataShape{})).find("holds no mesh"),
+              std::string::npos);
+}
+
+TEST(MeshData, UpdateKeepsItsMeshWhenOnlyTheCameraMoves) {
+    litkit::Scene scene = scene_with(litkit::MeshDataShape(octahedron()));
+    litkit::Renderer renderer(scene);
+    scene.observer.position = {1.0f, 2.0f, 4.0f};
+    renderer.update(scene);  // the same shared mesh
+    EXPECT_EQ(renderer.mesh_builds(), 1u);
+    litkit::Scene copy = scene_with(litkit::MeshDataShape(octahedron()));  // equal, not shared
+    copy.observer = scene.observer;
+    renderer.update(copy);
+    EXPECT_EQ(renderer.mesh_builds(), 1u);
+    // And the picture is the one a fresh renderer draws from there.
+    EXPECT_EQ(renderer.render().rgb, litkit::render(copy).rgb);
+    litkit::Mesh moved = octahedron();
+    moved.positions[0].x = 1.5f;
+    renderer.update(scene_with(litkit::MeshDataShape(moved)));
+    EXPECT_EQ(renderer.mesh_builds(), 2u);
+}
+
+TEST(MeshData, SameGeometryComparesSharedOrEqualMeshes) {
+    const litkit::Scene a = scene_with(litkit::MeshDataShape(octahedron()));
+    litkit::Scene b = a;  // shares the mesh
+    EXPECT_TRUE(litkit::same_geometry(a.objects[0], b.objects[0]));
+    b = scene_with(litkit::MeshDataShape(octahedron()));
+    EXPECT_TRUE(litkit::same_geometry(a.objects[0], b.objects[0]));
+    litkit::Mesh other = octahedron();
+    std::swap(other.triangles[0][0], other.triangles[0][1]);
+    b = scene_with(litkit::MeshDataShape(other));
+    EXPECT_FALSE(litkit::same_geometry(a.objects[0], b.objects[0]));
+    b = scene_with(litkit::MeshFileShape{octahedron_file});
+    EXPECT_FALSE(litkit::same_geometry(a.objects[0], b.objects[0]));
+}
+
+TEST(MeshData, SceneFilesRefuseItAndMeshToObjWritesIt) {
+    litkit::Scene scene = scene_with(litkit::MeshDataShape(octahedron()));
+    scene.objects[0].name = "gem";
+    try {
+        litkit::scene_to_toml(scene);
+        FAIL() << "scene_to_toml wrote an in-memory mesh";
+    } catch (const litkit::ArgumentError& error) {
+        EXPECT_NE(std::string(error.what()).find("object 'gem' has an in-memory mesh"),
+                  std::string::npos);
+    }
+    // The way out the message names: the mesh as an OBJ file, read back.
+    const fs::path path = fs::temp_directory_path() / ("litkit-api-" + std::to_string(::getpid()) + ".obj");
+    std::ofstream(path) << litkit::mesh_to_obj(octahedron());
+    const litkit::Mesh back = litkit::load_obj(path);
+    fs::remove(path);
+    EXPECT_EQ(back.positions, octahedron().positions);
+    EXPECT_EQ(back.triangles, octahedron().triangles);
+    EXPECT_EQ(litkit::shape_type_name(scene.objects[0].shape), "mesh data");
+}
+
+// --- inside-out meshes ------------------------------------------------------
+
+TEST(InsideOut, SignedVolumeAndClosedness) {
+    // The octahedron is 8 tetrahedra of volume 1/6 each.
+    EXPECT_NEAR(litkit::signed_volume(octahedron()), 4.0 / 3.0, 1e-12);
+    const litkit::Mesh inside_out = litkit::load_obj(inside_out_file);
+    EXPECT_NEAR(litkit::signed_volume(inside_out), -4.0 / 3.0, 1e-12);
+    EXPECT_TRUE(litkit::is_closed(octahedron()));
+    EXPECT_TRUE(litkit::is_closed(inside_out));
+    EXPECT_TRUE(litkit::is_closed(litkit::make_cube(1.0f))) << "corners repeated per face weld";
+    litkit::Mesh open = octahedron();
+    open.triangles.pop_back();
+    EXPECT_FALSE(litkit::is_closed(open));
+    litkit::Mesh mixed = octahedron();  // one face flipped: not consistently wound
+    std::swap(mixed.triangles[0][0], mixed.triangles[0][1]);
+    EXPECT_FALSE(litkit::is_closed(mixed));
+}
+
+TEST(InsideOut, AnInsideOutObjFileLoadsWithAWarningThatSaysHowToFixIt) {
+    const std::string scene_text = "[room]\nwidth = 10\nheight = 10\ndepth = 10\n"
+                                   "[observer]\nposition = [0, 0, 4]\n"
+                                   "[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n"
+                                   "[[lights]]\ntype = \"point\"\nposition = [2, 2, 3]\n"
+                                   "[[objects]]\ntype = \"mesh\"\nfile = \"";
+    const fs::path data = fs::path(LITKIT_TEST_DATA) / "obj";
+    const litkit::Scene bad = litkit::parse_scene(scene_text + "inside_out.obj\"\n", data / "s.toml");
+    ASSERT_TRUE(has_warning(bad, "inside out")) << "no warning";
+    for (const litkit::Diagnostic& w : bad.warnings) {
+        if (w.message.find("inside out") == std::string::npos) continue;
+        EXPECT_NE(w.message.find("'inside_out.obj'"), std::string::npos) << w.message;
+        EXPECT_NE(w.message.find("reverse the order of every face's vertices"), std::string::npos);
+        EXPECT_EQ(w.location.line, 15u) << "at the file key";
+    }
+    EXPECT_NO_THROW(litkit::render(bad)) << "a warning, not an error";
+    const std::string good_text = scene_text + octahedron_file.string() + "\"\n";
+    EXPECT_FALSE(has_warning(litkit::parse_scene(good_text, data / "s.toml"), "inside out"));
+}
+
+TEST(InsideOut, AnInsideOutMeshInMemoryIsWarnedAbout) {
+    litkit::Mesh mesh = octahedron();
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+    bool warned = false;
+    for (const litkit::Diagnostic& d :
+         litkit::validate_scene(scene_with(litkit::MeshDataShape(mesh))))
+        warned |= d.severity == litkit::Severity::Warning &&
+                  d.message.find("in-memory mesh is inside out") != std::string::npos;
+    EXPECT_TRUE(warned);
+}
