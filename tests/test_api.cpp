@@ -164,7 +164,7 @@ TEST(MeshData, DrawsExactlyAsTheSameMeshReadFromAFile) {
     EXPECT_EQ(image.rgb, expected.rgb);
     int covered = 0;
     for (std::size_t i = 0; i < image.rgb.size(); i += 3)
-        covered += image.rgb[i] != from_file.output.background[0];
+        covered += image.rgb[i] != litkit::to_rgb8(from_file.output.background)[0];
     EXPECT_GT(covered, 500) << "the octahedron is drawn";
 }
 
@@ -329,4 +329,96 @@ TEST(InsideOut, AnInsideOutMeshInMemoryIsWarnedAbout) {
         warned |= d.severity == litkit::Severity::Warning &&
                   d.message.find("in-memory mesh is inside out") != std::string::npos;
     EXPECT_TRUE(warned);
+}
+
+// --- one colour convention --------------------------------------------------
+
+namespace {
+
+litkit::Rgb8 byte_triple(int b) {
+    return {static_cast<std::uint8_t>(b), static_cast<std::uint8_t>(255 - b),
+            static_cast<std::uint8_t>((b * 7) % 256)};
+}
+
+std::string toml_triple(const litkit::Rgb8& c) {
+    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + "]";
+}
+
+}  // namespace
+
+TEST(Colours, EveryByteSurvivesTheRoundTripThrough0To1) {
+    for (int b = 0; b < 256; ++b) {
+        const litkit::Rgb8 bytes = byte_triple(b);
+        const glm::vec3 unit = litkit::from_rgb8(bytes);
+        EXPECT_EQ(unit.x, static_cast<float>(b) / 255.0f);
+        EXPECT_EQ(litkit::to_rgb8(unit), bytes) << b;
+    }
+    EXPECT_EQ(litkit::to_rgb8({-0.5f, 2.0f, std::numeric_limits<float>::quiet_NaN()}),
+              (litkit::Rgb8{0, 255, 0}));
+    EXPECT_EQ(litkit::to_rgb8({0.5f / 255.0f, 1.5f / 255.0f, 0.49f / 255.0f}),
+              (litkit::Rgb8{1, 2, 0}))
+        << "halves round up";
+}
+
+TEST(Colours, EveryBackgroundByteIsDrawnAndWrittenBackAsGiven) {
+    litkit::Scene base = litkit::default_scene();
+    base.objects.clear();
+    std::string text = litkit::scene_to_toml(base);
+    const std::string key = "background = ";
+    const std::size_t at = text.find(key) + key.size();
+    for (int b = 0; b < 256; ++b) {
+        const litkit::Rgb8 bytes = byte_triple(b);
+        text.replace(at, text.find('\n', at) - at, toml_triple(bytes));
+        litkit::Scene scene = litkit::parse_scene(text, "colour.toml");
+        scene.output.width = 4;
+        scene.output.height = 3;
+        const litkit::Image image = litkit::render(scene);
+        for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+            ASSERT_TRUE(image.rgb[i] == bytes[0] && image.rgb[i + 1] == bytes[1] &&
+                        image.rgb[i + 2] == bytes[2])
+                << "background " << toml_triple(bytes);
+        EXPECT_NE(litkit::scene_to_toml(scene).find(key + toml_triple(bytes) + "\n"), std::string::npos);
+    }
+}
+
+TEST(Colours, OpenGlDrawsEveryBackgroundByteAsTheCpuDoes) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.objects.clear();  // every pixel is background
+    scene.output.width = 2;
+    scene.output.height = 2;
+    try {
+        litkit::GlRenderer gl(scene);
+        for (int b = 0; b < 256; ++b) {
+            const litkit::Rgb8 bytes = byte_triple(b);
+            scene.output.background = litkit::from_rgb8(bytes);
+            gl.update(scene);
+            const litkit::Image image = gl.render();
+            const std::uint8_t* corner = image.pixel(0, 0);
+            ASSERT_TRUE(corner[0] == bytes[0] && corner[1] == bytes[1] && corner[2] == bytes[2])
+                << toml_triple(bytes) << " came out " << int(corner[0]) << " " << int(corner[1])
+                << " " << int(corner[2]);
+        }
+    } catch (const litkit::GlError& error) {
+        GTEST_SKIP() << "no OpenGL here: " << error.what();
+    }
+}
+
+TEST(Colours, ABackgroundOutside0To1IsRefused) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.background = {0.2f, 1.5f, 0.0f};
+    EXPECT_NE(render_error(scene).find("background must be 0–1 per channel"), std::string::npos);
+    scene.output.background = {std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
+    EXPECT_NE(render_error(scene).find("background must be 0–1 per channel"), std::string::npos);
+}
+
+TEST(Colours, TheExportedProgramClearsToTheSameBytes) {
+    litkit::Scene scene = litkit::default_scene();
+    scene.output.background = litkit::from_rgb8({1, 128, 255});
+    const fs::path root = fs::temp_directory_path() / ("litkit-colour-" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    litkit::export_cpp(scene, root, "demo", "s");
+    std::ifstream in(root / "main.cpp");
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    fs::remove_all(root);
+    EXPECT_NE(text.find("glm::vec3(1, 128, 255) / 255.0f"), std::string::npos);
 }

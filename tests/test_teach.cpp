@@ -359,7 +359,7 @@ void expect_every_pixel_explained(const litkit::Scene& scene, const std::string&
                 << label << " pixel " << x << "," << y;
             ++checked;
             if (!e.hit) {
-                EXPECT_EQ(e.rgb, scene.output.background) << label << " " << x << "," << y;
+                EXPECT_EQ(e.rgb, litkit::to_rgb8(scene.output.background)) << label << " " << x << "," << y;
                 continue;
             }
             ++hits;

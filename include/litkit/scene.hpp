@@ -39,12 +39,14 @@ struct Observer {
     float far = 1000.0f;
 };
 
-using Rgb8 = std::array<std::uint8_t, 3>;
-
 struct OutputSettings {
     int width = 800;
     int height = 600;
-    Rgb8 background{0, 0, 0};
+    // Linear 0–1 per channel like every colour of the API (lighting.hpp);
+    // each pixel no object covers is to_rgb8(background), without gamma.
+    // A scene file's [r, g, b] of 0–255 is from_rgb8 of it, and comes back
+    // out unchanged.
+    glm::vec3 background{0.0f, 0.0f, 0.0f};
     float gamma = 1.0f;
 };
 

@@ -716,8 +716,9 @@ void Renderer::render_into(Image& image) {
     Impl& impl = *impl_;
     impl.band_count = (height + band_height - 1) / band_height;
     impl.background_row.resize(3 * static_cast<std::size_t>(width));
+    const Rgb8 background = to_rgb8(impl.scene.output.background);
     for (std::size_t i = 0; i < impl.background_row.size(); ++i)
-        impl.background_row[i] = impl.scene.output.background[i % 3];
+        impl.background_row[i] = background[i % 3];
     for (BandScratch& scratch : impl.scratch) scratch.shaded_pixels = 0;
     impl.vertex_stage(width, height);
     impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {

@@ -119,9 +119,8 @@ void set_frame(GlRenderer::Impl& gl, const Scene& scene) {
     gl.frame.view_projection =
         core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
     gl.frame.eye = o.position;
-    gl.frame.background =
-        glm::vec3(scene.output.background[0], scene.output.background[1], scene.output.background[2]) /
-        255.0f;
+    // The bytes the CPU renderer writes, as OpenGL's exact 8-bit values.
+    gl.frame.background = from_rgb8(to_rgb8(scene.output.background));
     gl.frame.gamma = scene.output.gamma;
     if (!gl.target || gl.target->width() != scene.output.width ||
         gl.target->height() != scene.output.height) {

@@ -279,6 +279,12 @@ private:
         integer_in(output.height, 1, 16384, "output.height", "output", "height");
         at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
         finite(output.gamma, "output.gamma", "output", "gamma");
+        // Colours are 0–1 (lighting.hpp); a file's 0–255 always is.
+        const glm::vec3& b = output.background;
+        if (!(b.x >= 0.0f && b.x <= 1.0f && b.y >= 0.0f && b.y <= 1.0f && b.z >= 0.0f && b.z <= 1.0f))
+            error("output.background", "output",
+                  "background must be 0–1 per channel (litkit::from_rgb8 converts 0–255), found " +
+                      vector_text(b));
     }
 
     // docs/spec.md §9.2: crease_angle in (0, 180].

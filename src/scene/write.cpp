@@ -157,7 +157,7 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
             text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
     }
     text += "\n[output]\nwidth = " + std::to_string(scene.output.width) + "\nheight = " +
-            std::to_string(scene.output.height) + "\nbackground = " + rgb8(scene.output.background) +
+            std::to_string(scene.output.height) + "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +
             "\ngamma = " + number(scene.output.gamma) + "\n";
     for (const SceneLight& light : scene.lights) text += light_text(light);
     for (const SceneObject& object : scene.objects) text += object_text(object, folder);

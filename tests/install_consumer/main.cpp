@@ -18,7 +18,7 @@ int main() {
     scene.shading = litkit::Shading::Faceted;  // lit per pixel, one normal per face
     scene.output.width = 320;
     scene.output.height = 240;
-    scene.output.background = {20, 24, 32};
+    scene.output.background = litkit::from_rgb8({20, 24, 32});  // colours are 0-1
     scene.observer.position = {0, 1, 5};
     scene.observer.look_at = {0, 0.5f, 0};
 
