@@ -15,6 +15,7 @@
 
 #include "litkit/gl_renderer.hpp"
 #include "litkit/litkit.hpp"
+#include "run_command.hpp"
 
 namespace fs = std::filesystem;
 
@@ -318,6 +319,26 @@ TEST(InsideOut, AnInsideOutObjFileLoadsWithAWarningThatSaysHowToFixIt) {
     EXPECT_NO_THROW(litkit::render(bad)) << "a warning, not an error";
     const std::string good_text = scene_text + octahedron_file.string() + "\"\n";
     EXPECT_FALSE(has_warning(litkit::parse_scene(good_text, data / "s.toml"), "inside out"));
+}
+
+TEST(InsideOut, TheCommandLineRendersItAndPrintsTheWarning) {
+    const fs::path folder = fs::temp_directory_path() / ("litkit-inside-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "s.toml")
+        << "[room]\nwidth = 10\nheight = 10\ndepth = 10\n[observer]\nposition = [0, 0, 4]\n"
+           "[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n"
+           "[[lights]]\ntype = \"point\"\nposition = [2, 2, 3]\n"
+           "[[objects]]\ntype = \"mesh\"\nfile = \""
+        << inside_out_file.string() << "\"\n";
+    const auto run = litkit_test::run_command(std::string(LITKIT_CLI) + " render " +
+                                              (folder / "s.toml").string() + " -o " +
+                                              (folder / "s.png").string() + " --width 40 --height 30");
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("s.toml:15:8: warning: objects[0]: mesh file 'inside_out.obj' is inside out"),
+              std::string::npos)
+        << run.output;
+    EXPECT_TRUE(fs::exists(folder / "s.png"));
+    fs::remove_all(folder);
 }
 
 TEST(InsideOut, AnInsideOutMeshInMemoryIsWarnedAbout) {
