@@ -45,7 +45,9 @@ struct OutputSettings {
     // Linear 0–1 per channel like every colour of the API (lighting.hpp);
     // each pixel no object covers is to_rgb8(background), without gamma.
     // A scene file's [r, g, b] of 0–255 is from_rgb8 of it, and comes back
-    // out unchanged.
+    // out unchanged. Beware: `background = {10, 20, 30}` compiles (as
+    // 10.0f, ...); renderers refuse it ("background must be 0–1 per
+    // channel"): write from_rgb8({10, 20, 30}).
     glm::vec3 background{0.0f, 0.0f, 0.0f};
     float gamma = 1.0f;
 };
