@@ -443,3 +443,73 @@ TEST(Colours, TheExportedProgramClearsToTheSameBytes) {
     fs::remove_all(root);
     EXPECT_NE(text.find("glm::vec3(1, 128, 255) / 255.0f"), std::string::npos);
 }
+
+// --- no crash on any value --------------------------------------------------
+
+TEST(Preconditions, AnyExtremeValueRendersOrThrowsALitkitErrorNeverCrashes) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::vector<float> values = {nan, inf, -inf, -1.0f, 0.0f, 1e-30f, 1e30f, 3.0f};
+    using Setter = void (*)(litkit::Scene&, float);
+    const std::vector<std::pair<const char*, Setter>> fields = {
+        {"room.width", [](litkit::Scene& s, float v) { s.room.width = v; }},
+        {"observer.position.x", [](litkit::Scene& s, float v) { s.observer.position.x = v; }},
+        {"observer.look_at.y", [](litkit::Scene& s, float v) { s.observer.look_at.y = v; }},
+        {"observer.up.z", [](litkit::Scene& s, float v) { s.observer.up = {0.0f, v, 0.0f}; }},
+        {"observer.fov", [](litkit::Scene& s, float v) { s.observer.fov_degrees = v; }},
+        {"observer.near", [](litkit::Scene& s, float v) { s.observer.near = v; }},
+        {"observer.far", [](litkit::Scene& s, float v) { s.observer.far = v; }},
+        {"output.gamma", [](litkit::Scene& s, float v) { s.output.gamma = v; }},
+        {"output.background", [](litkit::Scene& s, float v) { s.output.background.y = v; }},
+        {"light.intensity", [](litkit::Scene& s, float v) { s.lights[0].light.intensity = v; }},
+        {"light.color", [](litkit::Scene& s, float v) { s.lights[0].light.color.x = v; }},
+        {"light.position", [](litkit::Scene& s, float v) {
+             s.lights[0].light.kind = litkit::PointLight{.position = {v, 0.0f, 0.0f}};
+         }},
+        {"light.attenuation", [](litkit::Scene& s, float v) {
+             s.lights[0].light.kind = litkit::PointLight{.attenuation = {0.0f, 0.0f, v}};
+         }},
+        {"spot.cutoff", [](litkit::Scene& s, float v) {
+             s.lights[0].light.kind = litkit::SpotLight{.cutoff_degrees = v};
+         }},
+        {"directional", [](litkit::Scene& s, float v) {
+             s.lights[0].light.kind = litkit::DirectionalLight{{v, v, v}};
+         }},
+        {"object.scale", [](litkit::Scene& s, float v) { s.objects[0].scale = v; }},
+        {"object.position", [](litkit::Scene& s, float v) { s.objects[0].position.z = v; }},
+        {"object.rotation", [](litkit::Scene& s, float v) { s.objects[0].rotation_degrees.y = v; }},
+        {"material.color", [](litkit::Scene& s, float v) { s.objects[0].material.color.z = v; }},
+        {"material.shininess", [](litkit::Scene& s, float v) { s.objects[0].material.shininess = v; }},
+        {"material.sigma", [](litkit::Scene& s, float v) { s.objects[0].material.sigma = v; }},
+        {"cube.size", [](litkit::Scene& s, float v) { s.objects[0].shape = litkit::CubeShape{v}; }},
+        {"sphere.radius", [](litkit::Scene& s, float v) {
+             s.objects[0].shape = litkit::SphereShape{.radius = v, .segments = 8, .rings = 4};
+         }},
+        {"crease", [](litkit::Scene& s, float v) { s.objects[0].crease_angle_degrees = v; }},
+        {"mesh data", [](litkit::Scene& s, float v) {
+             litkit::Mesh mesh = octahedron();
+             mesh.positions[1].x = v;
+             s.objects[0].shape = litkit::MeshDataShape(std::move(mesh));
+         }},
+    };
+    int refused = 0, drawn = 0;
+    for (const auto& [name, set] : fields) {
+        for (const float value : values) {
+            litkit::Scene scene = litkit::default_scene();
+            scene.output.width = 16;
+            scene.output.height = 12;
+            set(scene, value);
+            try {
+                const litkit::Image image = litkit::render(scene);
+                EXPECT_EQ(image.rgb.size(), 16u * 12u * 3u) << name << " = " << value;
+                ++drawn;
+            } catch (const litkit::Error& error) {
+                EXPECT_FALSE(std::string(error.what()).empty());
+                ++refused;
+            }
+        }
+    }
+    // NaN and infinity are refused for every field, so at least 2 per field.
+    EXPECT_GE(refused, 2 * static_cast<int>(fields.size()));
+    EXPECT_GT(drawn, 0);
+}
