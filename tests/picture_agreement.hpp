@@ -25,7 +25,7 @@ inline constexpr double required_fraction = 0.995;
 inline litkit::Image labels(litkit::Scene scene) {
     litkit::Light ambient{litkit::AmbientLight{}};
     scene.lights = {litkit::SceneLight{"label", ambient}};
-    scene.output.background = {0, 0, 0};
+    scene.output.background = glm::vec3(0.0f);
     scene.output.gamma = 1.0f;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         litkit::SceneObject& object = scene.objects[i];

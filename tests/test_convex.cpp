@@ -7,7 +7,7 @@
 
 #include <glm/common.hpp>
 
-#include "litkit/convex.hpp"
+#include "geometry/convex.hpp"
 
 namespace {
 

@@ -60,7 +60,7 @@ litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection
     litkit::Scene scene;
     scene.output.width = 160;
     scene.output.height = 120;
-    scene.output.background = {20, 30, 40};
+    scene.output.background = litkit::from_rgb8({20, 30, 40});
     scene.observer.position = {0.0f, 1.0f, 4.0f};
     scene.reflection = reflection;
     scene.shading = shading;

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/image.hpp"
 
 namespace fs = std::filesystem;

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/image.hpp"
 #include "run_command.hpp"
 

@@ -67,7 +67,7 @@ TEST(Render, PortableAndBestKernelsAgreeWithin1On255) {
         const litkit::Image best = litkit::render(scene);
         const litkit::Image fallback = litkit::render(scene, portable);
         EXPECT_LE(max_difference(best, fallback), 1) << file;
-        EXPECT_GT(covered_pixels(best, scene.output.background), 0) << file;
+        EXPECT_GT(covered_pixels(best, litkit::to_rgb8(scene.output.background)), 0) << file;
     }
 }
 
@@ -89,7 +89,7 @@ TEST(Render, ShadedPixelCountIsTheCoveredPixels) {
     litkit::Renderer renderer(scene);
     litkit::Image image;
     renderer.render_into(image);
-    const int covered = covered_pixels(image, scene.output.background);
+    const int covered = covered_pixels(image, litkit::to_rgb8(scene.output.background));
     EXPECT_GT(covered, 1000);
     EXPECT_EQ(renderer.shaded_pixel_count(), static_cast<std::size_t>(covered));
 }
@@ -97,9 +97,9 @@ TEST(Render, ShadedPixelCountIsTheCoveredPixels) {
 TEST(Render, SceneWithoutObjectsIsAllBackground) {
     litkit::Scene scene = small(litkit::default_scene());
     scene.objects.clear();
-    scene.output.background = {12, 34, 56};
+    scene.output.background = litkit::from_rgb8({12, 34, 56});
     const litkit::Image image = litkit::render(scene);
-    EXPECT_EQ(covered_pixels(image, scene.output.background), 0);
+    EXPECT_EQ(covered_pixels(image, litkit::to_rgb8(scene.output.background)), 0);
 }
 
 TEST(Render, ObjectSeenFromInsideShowsOnlyBackFacesSoNothing) {
@@ -110,7 +110,7 @@ TEST(Render, ObjectSeenFromInsideShowsOnlyBackFacesSoNothing) {
     scene.objects[0].shape = litkit::SphereShape{3.0f, 32, 16};
     scene.objects[0].position = scene.observer.position;
     const litkit::Image image = litkit::render(scene);
-    EXPECT_EQ(covered_pixels(image, scene.output.background), 0);
+    EXPECT_EQ(covered_pixels(image, litkit::to_rgb8(scene.output.background)), 0);
 }
 
 TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
@@ -129,18 +129,19 @@ TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
     scene.lights[0].light = litkit::Light{litkit::AmbientLight{}};
 
     scene.observer.near = 0.05f;
-    const int whole = covered_pixels(litkit::render(scene), scene.output.background);
+    const int whole = covered_pixels(litkit::render(scene), litkit::to_rgb8(scene.output.background));
     scene.observer.near = 1.8f;
     const litkit::Image clipped_image = litkit::render(scene);
-    const int clipped = covered_pixels(clipped_image, scene.output.background);
+    const int clipped = covered_pixels(clipped_image, litkit::to_rgb8(scene.output.background));
     EXPECT_GT(whole, 200 * 150 / 4);
     EXPECT_GT(clipped, whole / 10) << "the parts beyond the near plane must stay";
     EXPECT_LT(clipped, whole * 9 / 10) << "the parts before the near plane must go";
     // The centre column (the front edge, z ≈ 1.41 > 1.2) is clipped away.
     const std::uint8_t* centre = clipped_image.pixel(100, 75);
-    EXPECT_EQ(centre[0], scene.output.background[0]);
-    EXPECT_EQ(centre[1], scene.output.background[1]);
-    EXPECT_EQ(centre[2], scene.output.background[2]);
+    const litkit::Rgb8 background = litkit::to_rgb8(scene.output.background);
+    EXPECT_EQ(centre[0], background[0]);
+    EXPECT_EQ(centre[1], background[1]);
+    EXPECT_EQ(centre[2], background[2]);
 }
 
 // A prepared scene (issue 15): another observer, image size, models,

@@ -576,8 +576,10 @@ ReferenceImage reference_render(const litkit::Scene& scene) {
     image.width = width;
     image.height = height;
     const std::size_t count = static_cast<std::size_t>(width) * height;
-    const auto& bg = scene.output.background;
-    image.rgb.assign(count, {bg[0], bg[1], bg[2]});
+    // The background's bytes, computed here (round(255·c) in double), not by litkit::to_rgb8.
+    const glm::vec3& c = scene.output.background;
+    auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(255.0 * v)); };
+    image.rgb.assign(count, {byte(c.x), byte(c.y), byte(c.z)});
     image.intensity.assign(count, dvec3(0.0));
     image.object.assign(count, -1);
     image.triangle.assign(count, -1);
@@ -804,7 +806,7 @@ void expect_render_matches_reference(const litkit::Scene& scene, const std::stri
     ASSERT_EQ(image.rgb.size(), std::size_t(image.width) * image.height * 3);
     dump_if_asked(name, ref, image);
 
-    const Comparison result = compare(ref, image, scene.output.background, scene.objects.size());
+    const Comparison result = compare(ref, image, litkit::to_rgb8(scene.output.background), scene.objects.size());
     const auto ms = [](clock::duration duration) {
         return std::chrono::duration<double, std::milli>(duration).count();
     };
@@ -882,7 +884,7 @@ litkit::Scene make_scene(ShapeKind shape, litkit::Reflection reflection, litkit:
     scene.observer.fov_degrees = 45.0f;
     scene.output.width = 160;
     scene.output.height = 120;
-    scene.output.background = background_colour;
+    scene.output.background = litkit::from_rgb8(background_colour);
     scene.reflection = reflection;
     scene.shading = shading;
     scene.lights.push_back(
@@ -936,7 +938,7 @@ TEST(ReferenceRayCaster, CentrePixelOfSphereLitFromTheEyeMatchesHandComputation)
     scene.observer.position = {0.0f, 0.0f, 5.0f};
     scene.output.width = 101;
     scene.output.height = 101;
-    scene.output.background = background_colour;
+    scene.output.background = litkit::from_rgb8(background_colour);
     scene.reflection = litkit::Reflection::Phong;
     scene.shading = litkit::Shading::Phong;
     scene.lights.push_back(

@@ -211,7 +211,7 @@ file = ")" + mesh_file + R"("
 
     EXPECT_EQ(scene.output.width, 640);
     EXPECT_EQ(scene.output.height, 480);
-    EXPECT_EQ(scene.output.background, (Rgb8{10, 20, 30}));
+    EXPECT_EQ(litkit::to_rgb8(scene.output.background), (Rgb8{10, 20, 30}));
     EXPECT_FLOAT_EQ(scene.output.gamma, 2.2f);
 
     ASSERT_EQ(scene.lights.size(), 4u);
@@ -319,7 +319,7 @@ position = [0, 0, -3]
     EXPECT_FALSE(scene.shading.has_value());
     EXPECT_EQ(scene.output.width, 800);
     EXPECT_EQ(scene.output.height, 600);
-    EXPECT_EQ(scene.output.background, (Rgb8{0, 0, 0}));
+    EXPECT_EQ(scene.output.background, glm::vec3(0.0f));
     EXPECT_FLOAT_EQ(scene.output.gamma, 1.0f);
 
     ASSERT_EQ(scene.lights.size(), 3u);
@@ -395,7 +395,7 @@ type = "cube"
 material = { color = "#336699" }
 )"),
                                     "scene.toml");
-    EXPECT_EQ(scene.output.background, (Rgb8{10, 20, 30}));
+    EXPECT_EQ(litkit::to_rgb8(scene.output.background), (Rgb8{10, 20, 30}));
     expect_vec3(scene.lights[0].light.color, {1.0f, 128 / 255.0f, 0.0f});
     expect_vec3(scene.objects[0].material.color, {0.2f, 0.4f, 0.6f});
 }

@@ -32,7 +32,7 @@ const std::filesystem::path obj_data = std::filesystem::path(LITKIT_TEST_DATA) /
 
 // Σ a·(b × c) / 6 over the triangles: the enclosed volume of a closed mesh,
 // positive when every triangle winds counter-clockwise seen from outside.
-double signed_volume(const Mesh& mesh) {
+double enclosed_volume(const Mesh& mesh) {
     double sum = 0.0;
     for (const auto& triangle : mesh.triangles) {
         const glm::dvec3 a = mesh.positions[triangle[0]];
@@ -105,7 +105,7 @@ TEST(Cube, IsClosedAndEnclosesItsVolumeWindingOutward) {
     // Edge 2: volume 2³ = 8, positive only if every face winds outward.
     const Mesh cube = litkit::make_cube(2.0f);
     expect_closed(cube);
-    EXPECT_NEAR(signed_volume(cube), 8.0, 1e-9);
+    EXPECT_NEAR(enclosed_volume(cube), 8.0, 1e-9);
 }
 
 TEST(Cube, EveryFaceNormalPointsAwayFromTheCentre) {
@@ -184,7 +184,7 @@ TEST(Sphere, IsClosedAndWindsOutward) {
         // Its corners lie on the unit sphere and it is convex, so it lies
         // inside the ball: volume below 4π/3; positive because it winds
         // outward.
-        const double volume = signed_volume(sphere);
+        const double volume = enclosed_volume(sphere);
         EXPECT_GT(volume, 0.0);
         EXPECT_LT(volume, 4.0 * pi / 3.0);
     }
@@ -197,7 +197,7 @@ TEST(Sphere, VolumeApproachesTheBallsAtDefaultTessellation) {
     // centre; the convex mesh holds the ball of that radius:
     // (4π/3)·8·(cos(π/32))³ ≥ 0.9856 of the ball's 33.510. Allow 1.5 %.
     const double ball = 4.0 * pi / 3.0 * 8.0;
-    const double volume = signed_volume(litkit::make_sphere(2.0f, 64, 32));
+    const double volume = enclosed_volume(litkit::make_sphere(2.0f, 64, 32));
     EXPECT_LT(volume, ball);
     EXPECT_GT(volume, 0.985 * ball);
 }
@@ -270,7 +270,7 @@ TEST(Torus, IsClosedAndEnclosesItsVolumeWindingOutward) {
     // area factor: (2π/32)²/6 ≈ 0.64 % and (2π/64)²/6 ≈ 0.16 %; allow 1.5 %.
     const Mesh torus = litkit::make_torus(2.0f, 0.5f, 64, 32);
     expect_closed(torus);
-    EXPECT_NEAR(signed_volume(torus), pi * pi, 0.015 * pi * pi);
+    EXPECT_NEAR(enclosed_volume(torus), pi * pi, 0.015 * pi * pi);
 }
 
 TEST(Torus, OutOfRangeArgumentsThrow) {
@@ -446,7 +446,7 @@ TEST(Teapot, EnclosesAPositiveVolume) {
     // The patches do not close the pot exactly (the gap around the lid, the
     // spout's mouth, handle and spout ending inside the body), but nearly:
     // with outward winding Σ a·(b × c)/6 is positive, with inward negative.
-    EXPECT_GT(signed_volume(litkit::make_teapot(1.0f, 10)), 0.0);
+    EXPECT_GT(enclosed_volume(litkit::make_teapot(1.0f, 10)), 0.0);
 }
 
 TEST(Teapot, OutOfRangeArgumentsThrow) {

@@ -315,7 +315,7 @@ litkit::Scene model_balls(litkit::Shading shading, float gamma) {
     litkit::Scene scene;
     scene.room = {12.0f, 12.0f, 12.0f};
     scene.observer.position = {0.0f, 0.5f, 5.0f};
-    scene.output = {54, 40, {10, 20, 30}, gamma};
+    scene.output = {54, 40, litkit::from_rgb8({10, 20, 30}), gamma};
     scene.reflection = litkit::Reflection::Phong;
     scene.shading = shading;
     litkit::Light ambient{litkit::AmbientLight{}, glm::vec3(1.0f), 0.2f};
@@ -359,7 +359,7 @@ void expect_every_pixel_explained(const litkit::Scene& scene, const std::string&
                 << label << " pixel " << x << "," << y;
             ++checked;
             if (!e.hit) {
-                EXPECT_EQ(e.rgb, scene.output.background) << label << " " << x << "," << y;
+                EXPECT_EQ(e.rgb, litkit::to_rgb8(scene.output.background)) << label << " " << x << "," << y;
                 continue;
             }
             ++hits;

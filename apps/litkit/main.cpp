@@ -25,7 +25,7 @@
 #include "litkit/error.hpp"
 #include "litkit/explain.hpp"
 #include "litkit/export.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/gl_renderer.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"

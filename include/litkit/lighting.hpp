@@ -6,6 +6,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,6 +18,26 @@
 #include <vector>
 
 namespace litkit {
+
+// Colours. One convention across the API: every colour of a scene
+// (Material::color, Light::color, OutputSettings::background) is a
+// glm::vec3 of linear values, 0–1 per channel (1 = full). Scene files
+// write colours as 0–255 integers (or "#rrggbb"), and images hold 8-bit
+// pixels; these two convert between the two, and are exact for the 256
+// byte values: to_rgb8(from_rgb8(b)) == b for every b.
+using Rgb8 = std::array<std::uint8_t, 3>;  // 8 bits per channel, 0–255: a scene file's or a pixel's
+// Each byte / 255 (so 255 → 1.0f).
+inline glm::vec3 from_rgb8(const Rgb8& rgb) {
+    return glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f;
+}
+// Each channel clamped to [0, 1] (NaN → 0), × 255, rounded half up.
+inline Rgb8 to_rgb8(const glm::vec3& color) {
+    auto byte = [](float c) {
+        const float clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // NaN fails c > 0
+        return static_cast<std::uint8_t>(std::floor(clamped * 255.0f + 0.5f));
+    };
+    return {byte(color.x), byte(color.y), byte(color.z)};
+}
 
 // docs/spec.md §4 (IM1–IM4) and §9.1 (LC2). The order is the spec's, and that
 // of every list users see (validation's names, `litkit view`'s keys 1–9).
@@ -55,8 +78,8 @@ std::string_view to_string(Shading shading);
 std::optional<Reflection> parse_reflection(std::string_view text);
 std::optional<Shading> parse_shading(std::string_view text);
 
-// Surface coefficients. `color` is C of docs/spec.md §4: the material colour / 255,
-// per channel in [0, 1].
+// Surface coefficients. `color` is C of docs/spec.md §4, linear 0–1 per
+// channel (a scene file's 0–255 colour / 255: from_rgb8).
 // The parameters of docs/spec.md §9.1 are here whatever the model, so that
 // switching models keeps them; a model ignores those it does not use.
 struct Material {
@@ -117,7 +140,7 @@ using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotL
 
 struct Light {
     LightKind kind;
-    glm::vec3 color{1.0f, 1.0f, 1.0f};  // colour / 255
+    glm::vec3 color{1.0f, 1.0f, 1.0f};  // linear 0–1 per channel (a scene file's colour / 255)
     float intensity = 1.0f;
 
     // I_L of docs/spec.md §4: intensity · colour / 255.

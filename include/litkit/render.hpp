@@ -12,8 +12,11 @@
 
 namespace litkit {
 
+// The most threads a Renderer starts.
+inline constexpr int max_render_threads = 1024;
+
 struct RenderOptions {
-    int threads = 0;  // 0: one per hardware thread
+    int threads = 0;  // 0: one per hardware thread; at most max_render_threads
     // Used where the scene leaves [lighting] out (R10); the caller decides,
     // per R11, whether that is allowed.
     Reflection fallback_reflection = default_reflection;
@@ -43,9 +46,21 @@ struct PixelProbe {
 
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)
 // so that several frames can be drawn without rebuilding it.
+//
+// Preconditions, checked (never assumed, in any build type): the scene
+// passes check_renderable (litkit/validate.hpp: every value in range and
+// finite, a usable view, an image of 1–16384 pixels each way, in-memory
+// meshes well formed), else SceneError listing every problem; options.threads
+// in 0–max_render_threads, else ArgumentError. Both derive from
+// litkit::Error. The constructor and update() check them; a failed update
+// leaves the renderer drawing the scene it had. The relations between
+// entities (overlaps, objects outside the room) are validate_scene's, which
+// load_scene runs: the renderer does not repeat that (costly) check and
+// draws such a scene as it is.
 class Renderer {
 public:
-    // Builds every object's mesh; throws IoError for an unreadable mesh file.
+    // Checks the preconditions, then builds every object's mesh; throws
+    // IoError for an unreadable mesh file.
     explicit Renderer(const Scene& scene, RenderOptions options = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -80,7 +95,8 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// One-shot convenience: Renderer(scene, options).render().
+// One-shot convenience: Renderer(scene, options).render(), with the same
+// preconditions.
 Image render(const Scene& scene, RenderOptions options = {});
 
 }  // namespace litkit

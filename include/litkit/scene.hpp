@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,12 +43,16 @@ struct Observer {
     float far = 1000.0f;
 };
 
-using Rgb8 = std::array<std::uint8_t, 3>;
-
 struct OutputSettings {
     int width = 800;
     int height = 600;
-    Rgb8 background{0, 0, 0};
+    // Linear 0–1 per channel like every colour of the API (lighting.hpp);
+    // each pixel no object covers is to_rgb8(background), without gamma.
+    // A scene file's [r, g, b] of 0–255 is from_rgb8 of it, and comes back
+    // out unchanged. Beware: `background = {10, 20, 30}` compiles (as
+    // 10.0f, ...); renderers refuse it ("background must be 0–1 per
+    // channel"): write from_rgb8({10, 20, 30}).
+    glm::vec3 background{0.0f, 0.0f, 0.0f};
     float gamma = 1.0f;
 };
 
@@ -72,9 +77,26 @@ struct TeapotShape {
 struct MeshFileShape {
     std::filesystem::path file;  // already resolved against the scene file's folder
 };
-using Shape = std::variant<CubeShape, SphereShape, TorusShape, TeapotShape, MeshFileShape>;
+// A mesh given in memory, for scenes built in code: positions and triangles
+// (counter-clockwise seen from outside), in the object's local coordinates
+// like a mesh file's. Validated like a mesh file (validate_scene and every
+// renderer): every position finite, every index below positions.size(), at
+// least one triangle; file_normals are not used (normals = "file" needs a
+// mesh file). Held by a shared pointer to const, so that copying a scene
+// (Renderer::update keeps one) does not copy the mesh; build it once:
+//     litkit::Mesh mesh;  mesh.positions = {...};  mesh.triangles = {...};
+//     object.shape = litkit::MeshDataShape(std::move(mesh));
+// A scene file cannot hold one: scene_to_toml refuses it (ArgumentError).
+struct MeshDataShape {
+    std::shared_ptr<const Mesh> mesh;
+    MeshDataShape() = default;
+    explicit MeshDataShape(Mesh data) : mesh(std::make_shared<const Mesh>(std::move(data))) {}
+};
+using Shape =
+    std::variant<CubeShape, SphereShape, TorusShape, TeapotShape, MeshFileShape, MeshDataShape>;
 
-// The scene-file name of a shape type: "cube", "sphere", "torus", "teapot", "mesh".
+// The scene-file name of a shape type: "cube", "sphere", "torus", "teapot",
+// "mesh"; "mesh data" for a MeshDataShape (which no scene file holds).
 std::string_view shape_type_name(const Shape& shape);
 
 struct SceneLight {
@@ -150,6 +172,9 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& sourc
 // (every value, colours as their 0-255 integers, every key written out).
 // Mesh paths are written relative to the folder of `written_as` where they
 // can be, else absolute. Comments of the original files are not kept.
+// Throws ArgumentError for an object with a MeshDataShape: a scene file
+// names its meshes by file, so write the mesh as an OBJ file (mesh_to_obj)
+// and use a MeshFileShape.
 std::string scene_to_toml(const Scene& scene, const std::filesystem::path& written_as = {});
 
 // The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
@@ -159,13 +184,16 @@ Scene default_scene();
 
 // True when the two objects have the same mesh in the same place: the same
 // shape with the same parameters, position, rotation and scale (what a
-// renderer's update can keep).
+// renderer's update can keep). Two MeshDataShapes are the same when they
+// share one Mesh or hold equal positions and triangles.
 bool same_geometry(const SceneObject& a, const SceneObject& b);
 
 // world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
 glm::mat4 object_to_world(const SceneObject& object);
 
-// The object's mesh in local coordinates (builds the shape or reads the file).
+// The object's mesh in local coordinates (builds the shape, reads the file
+// or copies the in-memory mesh). Throws ArgumentError for a MeshDataShape
+// that check_mesh_data refuses.
 Mesh object_mesh(const SceneObject& object);
 
 // An object's triangles in world space, as every backend draws them:

@@ -13,7 +13,7 @@
 #include "codegen/gl_scene.hpp"
 #include "codegen/glsl_expr.hpp"
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/glsl.hpp"
 
 namespace litkit {
@@ -352,7 +352,7 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
     const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first
 
     const Observer& o = scene.observer;
-    const auto& bg = scene.output.background;
+    const Rgb8 bg = to_rgb8(scene.output.background);
     const std::string program = fill_template(
         detail::program_template_text,
         {{"CORE", detail::opengl_core_text},

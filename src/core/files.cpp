@@ -1,4 +1,4 @@
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 
 #include <fcntl.h>
 #include <limits.h>

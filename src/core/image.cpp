@@ -9,7 +9,7 @@
 #include <string>
 
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 
 namespace litkit {
 

@@ -11,6 +11,7 @@
 //             (Gouraud) or one colour (flat)
 #include "litkit/render.hpp"
 #include "litkit/error.hpp"
+#include "litkit/validate.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -679,8 +680,21 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     }
 }
 
+namespace {
+
+// The renderer's preconditions (render.hpp), checked before anything is built.
+void check_preconditions(const Scene& scene, const RenderOptions& options) {
+    if (options.threads < 0 || options.threads > max_render_threads)
+        throw ArgumentError("RenderOptions::threads must be 0 (one per hardware thread) to " +
+                            std::to_string(max_render_threads) + ", found " +
+                            std::to_string(options.threads));
+    check_renderable(scene);
+}
+
+}  // namespace
+
 Renderer::Renderer(const Scene& scene, RenderOptions options)
-    : impl_(std::make_unique<Impl>(scene, options)) {
+    : impl_((check_preconditions(scene, options), std::make_unique<Impl>(scene, options))) {
     impl_->prepare();
 }
 
@@ -707,8 +721,9 @@ void Renderer::render_into(Image& image) {
     Impl& impl = *impl_;
     impl.band_count = (height + band_height - 1) / band_height;
     impl.background_row.resize(3 * static_cast<std::size_t>(width));
+    const Rgb8 background = to_rgb8(impl.scene.output.background);
     for (std::size_t i = 0; i < impl.background_row.size(); ++i)
-        impl.background_row[i] = impl.scene.output.background[i % 3];
+        impl.background_row[i] = background[i % 3];
     for (BandScratch& scratch : impl.scratch) scratch.shaded_pixels = 0;
     impl.vertex_stage(width, height);
     impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
@@ -720,6 +735,7 @@ void Renderer::render_into(Image& image) {
 }
 
 void Renderer::update(const Scene& new_scene) {
+    check_renderable(new_scene);  // before anything of the old scene is replaced
     Impl& impl = *impl_;
     const float length_scale = float_safe_length_scale(new_scene);
     const Scene scene = scale_lengths(new_scene, length_scale);

@@ -1,4 +1,4 @@
-#include "litkit/convex.hpp"
+#include "geometry/convex.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

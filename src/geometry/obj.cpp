@@ -17,7 +17,7 @@
 
 #include "geometry/obj_numbers.hpp"
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/shapes.hpp"
 
 namespace litkit {

@@ -20,6 +20,7 @@
 
 #include "codegen/gl_scene.hpp"
 #include "litkit/glsl.hpp"
+#include "litkit/validate.hpp"
 
 namespace litkit {
 
@@ -118,9 +119,8 @@ void set_frame(GlRenderer::Impl& gl, const Scene& scene) {
     gl.frame.view_projection =
         core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
     gl.frame.eye = o.position;
-    gl.frame.background =
-        glm::vec3(scene.output.background[0], scene.output.background[1], scene.output.background[2]) /
-        255.0f;
+    // The bytes the CPU renderer writes, as OpenGL's exact 8-bit values.
+    gl.frame.background = from_rgb8(to_rgb8(scene.output.background));
     gl.frame.gamma = scene.output.gamma;
     if (!gl.target || gl.target->width() != scene.output.width ||
         gl.target->height() != scene.output.height) {
@@ -135,6 +135,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
     : GlRenderer(scene, options, CurrentContext{}, true) {}
 
 void GlRenderer::update(const Scene& scene) {
+    check_renderable(scene);  // litkit/validate.hpp: the renderers' preconditions
     Impl& gl = *impl_;
     // What the programs and the uploaded meshes depend on: the objects'
     // geometry and models, and how many lights the shaders hold.
@@ -174,6 +175,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
 
 GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
+    check_renderable(scene);  // before any OpenGL is set up
     Impl& gl = *impl_;
     if (headless) {
         require_gl_libraries();

@@ -32,7 +32,8 @@ struct ScaleShape {
         torus.minor_radius = scaled(torus.minor_radius, factor);
     }
     void operator()(TeapotShape& teapot) const { teapot.size = scaled(teapot.size, factor); }
-    void operator()(MeshFileShape&) const {}  // its object's scale carries the factor
+    void operator()(MeshFileShape&) const {}  // their objects' scale carries the factor
+    void operator()(MeshDataShape&) const {}
 };
 
 }  // namespace
@@ -76,7 +77,8 @@ Scene scale_lengths(const Scene& scene, float factor) {
     }
     for (SceneObject& object : result.objects) {
         object.position = scaled(object.position, k);
-        if (std::holds_alternative<MeshFileShape>(object.shape)) {
+        if (std::holds_alternative<MeshFileShape>(object.shape) ||
+            std::holds_alternative<MeshDataShape>(object.shape)) {
             object.scale = scaled(object.scale, k);
         } else {
             std::visit(ScaleShape{k}, object.shape);

@@ -12,7 +12,7 @@
 #include <memory>
 #include <system_error>
 
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/validate.hpp"
 #include "scene/nesting.hpp"
 #include "scene/reader.hpp"

@@ -85,9 +85,7 @@ const Family& object_family() {
     return family;
 }
 
-glm::vec3 unit_color(const Rgb8& color) {
-    return glm::vec3(color[0], color[1], color[2]) / 255.0f;
-}
+glm::vec3 unit_color(const Rgb8& color) { return from_rgb8(color); }
 
 }  // namespace
 
@@ -218,7 +216,7 @@ void SceneReader::read_output(const Site& site) {
     OutputSettings& output = scene_.output;
     if (auto width = read_integer(site, "width")) output.width = *width;
     if (auto height = read_integer(site, "height")) output.height = *height;
-    if (auto background = read_color(site, "background")) output.background = *background;
+    if (auto background = read_color(site, "background")) output.background = unit_color(*background);
     if (auto gamma = read_number(site, "gamma")) output.gamma = *gamma;
 }
 

@@ -27,6 +27,7 @@ std::string_view shape_type_name(const Shape& shape) {
         std::string_view operator()(const TorusShape&) const { return "torus"; }
         std::string_view operator()(const TeapotShape&) const { return "teapot"; }
         std::string_view operator()(const MeshFileShape&) const { return "mesh"; }
+        std::string_view operator()(const MeshDataShape&) const { return "mesh data"; }
     };
     return std::visit(Name{}, shape);
 }
@@ -54,8 +55,12 @@ bool same_geometry(const SceneObject& a, const SceneObject& b) {
                        shape.sides == other.sides;
             else if constexpr (std::is_same_v<S, TeapotShape>)
                 return shape.size == other.size && shape.subdivisions == other.subdivisions;
-            else
+            else if constexpr (std::is_same_v<S, MeshFileShape>)
                 return shape.file == other.file;
+            else
+                return shape.mesh == other.mesh ||
+                       (shape.mesh && other.mesh && shape.mesh->positions == other.mesh->positions &&
+                        shape.mesh->triangles == other.mesh->triangles);
         },
         a.shape);
 }
@@ -83,6 +88,15 @@ Mesh object_mesh(const SceneObject& object) {
             return make_teapot(teapot.size, teapot.subdivisions);
         }
         Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
+        Mesh operator()(const MeshDataShape& data) const {
+            if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
+            if (std::string problem = check_mesh_data(*data.mesh); !problem.empty())
+                throw ArgumentError("in-memory mesh: " + problem);
+            Mesh mesh;
+            mesh.positions = data.mesh->positions;
+            mesh.triangles = data.mesh->triangles;
+            return mesh;
+        }
     };
     return std::visit(Build{}, object.shape);
 }

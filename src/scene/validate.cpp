@@ -17,7 +17,7 @@
 #include <optional>
 #include <string>
 
-#include "litkit/convex.hpp"
+#include "geometry/convex.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/float_range.hpp"
 #include "scene/validate_internal.hpp"
@@ -152,13 +152,16 @@ public:
     Validator(const Scene& scene, const BrokenEntities& broken, std::uint64_t triangle_budget)
         : scene_(scene), broken_(broken), triangle_budget_(triangle_budget) {}
 
+    // check_renderable: each value and entity on its own, no relations
+    // between entities, no meshes built, no warnings.
+    std::vector<Diagnostic> run_values_only() {
+        relations_ = false;
+        check_values();
+        return std::move(diagnostics_);
+    }
+
     std::vector<Diagnostic> run() {
-        check_room();
-        check_output();
-        check_lighting();
-        check_observer();
-        for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
-        for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
+        check_values();
         check_names();
         // Over the budget, no mesh is built: the geometric checks would
         // allocate what the budget exists to refuse.
@@ -168,6 +171,15 @@ public:
     }
 
 private:
+    void check_values() {
+        check_room();
+        check_output();
+        check_lighting();
+        check_observer();
+        for (std::size_t i = 0; i < scene_.lights.size(); ++i) check_light(i);
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) check_object_values(i);
+    }
+
     // Reporting: `path` names the value ("lights[0].position"); when the file
     // did not give it (a default), point at the nearest enclosing table.
     FileLoc where(std::string path) const {
@@ -212,6 +224,19 @@ private:
                   key + " must be " + std::to_string(low) + "–" + std::to_string(high) +
                       ", found " + std::to_string(value));
     }
+    // A scene read from a file holds finite numbers only (the reader refuses
+    // nan and inf); these catch the ones a scene built in code may hold.
+    bool finite(float value, const std::string& path, const std::string& who, const std::string& key) {
+        if (std::isfinite(value)) return true;
+        error(path, who, key + " must be a finite number, found " + number_text(value));
+        return false;
+    }
+    bool finite(const glm::vec3& v, const std::string& path, const std::string& who,
+                const std::string& key) {
+        if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) return true;
+        error(path, who, key + " must be finite, found " + vector_text(v));
+        return false;
+    }
     void non_zero(const glm::vec3& v, const std::string& path, const std::string& who,
                   const std::string& key) {
         if (v.x == 0.0f && v.y == 0.0f && v.z == 0.0f)
@@ -236,6 +261,9 @@ private:
         at_least(room.width, 0.0f, false, "room.width", "room", "width");
         at_least(room.height, 0.0f, false, "room.height", "room", "height");
         at_least(room.depth, 0.0f, false, "room.depth", "room", "depth");
+        finite(room.width, "room.width", "room", "width");
+        finite(room.height, "room.height", "room", "height");
+        finite(room.depth, "room.depth", "room", "depth");
         room_ok_ = usable("room") && diagnostics_.size() == before;
     }
 
@@ -251,6 +279,13 @@ private:
         integer_in(output.width, 1, 16384, "output.width", "output", "width");
         integer_in(output.height, 1, 16384, "output.height", "output", "height");
         at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
+        finite(output.gamma, "output.gamma", "output", "gamma");
+        // Colours are 0–1 (lighting.hpp); a file's 0–255 always is.
+        const glm::vec3& b = output.background;
+        if (!(b.x >= 0.0f && b.x <= 1.0f && b.y >= 0.0f && b.y <= 1.0f && b.z >= 0.0f && b.z <= 1.0f))
+            error("output.background", "output",
+                  "background must be 0–1 per channel (litkit::from_rgb8 converts 0–255), found " +
+                      vector_text(b));
     }
 
     // docs/spec.md §9.2: crease_angle in (0, 180].
@@ -275,6 +310,10 @@ private:
             error("observer.fov", "observer",
                   "fov must be in [0.01, 180) degrees, found " + number_text(o.fov_degrees));
         at_least(o.near, 0.0f, false, "observer.near", "observer", "near");
+        finite(o.position, "observer.position", "observer", "position");
+        finite(o.look_at, "observer.look_at", "observer", "look_at");
+        finite(o.up, "observer.up", "observer", "up");
+        finite(o.far, "observer.far", "observer", "far");
         // A scene read from a file had far and near compared as written (the
         // reader, check_far_beyond_near); this check is for scenes built in code.
         const bool far_near_from_file =
@@ -301,7 +340,7 @@ private:
                       vector_text(view));
         }
         observer_ok_ = diagnostics_.size() == before;
-        if (room_ok_ && !inside_room(o.position))
+        if (relations_ && room_ok_ && !inside_room(o.position))
             error("observer.position", "observer",
                   "position " + vector_text(o.position) + " is outside " + room_text());
     }
@@ -312,6 +351,8 @@ private:
         const std::string base = "lights[" + std::to_string(index) + "]";
         const std::string who = subject("lights", index, scene_light.name);
         at_least(light.intensity, 0.0f, true, base + ".intensity", who, "intensity");
+        finite(light.intensity, base + ".intensity", who, "intensity");
+        finite(light.color, base + ".color", who, "color");
         auto check_attenuation = [&](const glm::vec3& k) {
             const std::string path = base + ".attenuation";
             if (k.x < 0.0f || k.y < 0.0f || k.z < 0.0f)
@@ -320,12 +361,18 @@ private:
                 error(path, who, "attenuation coefficients must not all be 0");
         };
         if (const auto* directional = std::get_if<DirectionalLight>(&light.kind)) {
-            non_zero(directional->direction, base + ".direction", who, "direction");
+            if (finite(directional->direction, base + ".direction", who, "direction"))
+                non_zero(directional->direction, base + ".direction", who, "direction");
         } else if (const auto* point = std::get_if<PointLight>(&light.kind)) {
-            check_attenuation(point->attenuation);
+            if (finite(point->position, base + ".position", who, "position") &&
+                finite(point->attenuation, base + ".attenuation", who, "attenuation"))
+                check_attenuation(point->attenuation);
         } else if (const auto* spot = std::get_if<SpotLight>(&light.kind)) {
-            check_attenuation(spot->attenuation);
-            non_zero(spot->direction, base + ".direction", who, "direction");
+            if (finite(spot->position, base + ".position", who, "position") &&
+                finite(spot->attenuation, base + ".attenuation", who, "attenuation"))
+                check_attenuation(spot->attenuation);
+            if (finite(spot->direction, base + ".direction", who, "direction"))
+                non_zero(spot->direction, base + ".direction", who, "direction");
             if (!(spot->cutoff_degrees > 0.0f && spot->cutoff_degrees <= 90.0f))
                 error(base + ".cutoff", who,
                       "cutoff must be in (0, 90] degrees, found " +
@@ -333,7 +380,7 @@ private:
             at_least(spot->exponent, 0.0f, true, base + ".exponent", who, "exponent");
             in_range(spot->penumbra, 0.0f, 1.0f, base + ".penumbra", who, "penumbra");
         }
-        if (const glm::vec3* position = light_position(light); position && usable(base)) {
+        if (const glm::vec3* position = light_position(light); relations_ && position && usable(base)) {
             if (room_ok_ && !inside_room(*position))
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is outside " + room_text());
@@ -359,12 +406,17 @@ private:
         // can be built for the geometry checks; a bad material does not.
         std::size_t before = diagnostics_.size();
         at_least(object.scale, 0.0f, false, base + ".scale", who, "scale");
+        finite(object.scale, base + ".scale", who, "scale");
+        finite(object.position, base + ".position", who, "position");
+        finite(object.rotation_degrees, base + ".rotation", who, "rotation");
         bool geometry_ok = diagnostics_.size() == before;
         const Material& m = object.material;
+        finite(m.color, base + ".material.color", who, "material.color");
         in_range(m.ka, 0.0f, 1.0f, base + ".material.ka", who, "material.ka");
         in_range(m.kd, 0.0f, 1.0f, base + ".material.kd", who, "material.kd");
         in_range(m.ks, 0.0f, 1.0f, base + ".material.ks", who, "material.ks");
         at_least(m.shininess, 0.0f, true, base + ".material.shininess", who, "material.shininess");
+        finite(m.shininess, base + ".material.shininess", who, "material.shininess");
         // docs/spec.md §9.1: checked whatever the object's model.
         for_each_model_parameter(
             [&](const ModelParameter& parameter, const float& value) {
@@ -416,6 +468,13 @@ private:
                              "subdivisions");
             }
             void operator()(const MeshFileShape&) {}
+            // Checked as load_obj checks a file (the file's are checked when
+            // it is read, in build_hulls).
+            void operator()(const MeshDataShape& data) {
+                const std::string problem =
+                    data.mesh ? check_mesh_data(*data.mesh) : "the MeshDataShape holds no mesh";
+                if (!problem.empty()) v.error(base + ".mesh", who, "in-memory mesh: " + problem);
+            }
         };
         before = diagnostics_.size();
         std::visit(ShapeCheck{*this, base, who}, object.shape);
@@ -463,6 +522,7 @@ private:
                 }
                 throw IoError(failure.path(), failure.reason(), scene_place);
             }
+            check_orientation(i, mesh);
             // docs/spec.md §9.2: "file" normals need one at every face corner.
             const auto* file = std::get_if<MeshFileShape>(&object.shape);
             if (file && normal_options(scene_, object).normals == Normals::File) {
@@ -475,6 +535,26 @@ private:
             for (const glm::vec3& p : mesh.positions)
                 hull.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
         }
+    }
+
+    // A closed mesh (file or in memory) with a negative signed volume is
+    // inside out: its faces wind clockwise seen from outside, so back-face
+    // culling hides its outside and shows the far inside. Built-in shapes
+    // wind correctly by construction.
+    void check_orientation(std::size_t index, const Mesh& mesh) {
+        const SceneObject& object = scene_.objects[index];
+        const auto* file = std::get_if<MeshFileShape>(&object.shape);
+        if (!file && !std::holds_alternative<MeshDataShape>(object.shape)) return;
+        if (!is_closed(mesh) || !(signed_volume(mesh) < 0.0)) return;
+        const std::string what =
+            file ? "mesh file '" + file->file.filename().string() + "'" : std::string("in-memory mesh");
+        report(Severity::Warning,
+               "objects[" + std::to_string(index) + "]" + (file ? ".file" : ".mesh"),
+               subject("objects", index, object.name),
+               what + " is inside out: it is closed but its faces wind clockwise seen from "
+                      "outside (negative signed volume), so its outside is culled as back faces "
+                      "and its inside shows; reverse the order of every face's vertices (e.g. "
+                      "\"f 1 2 3\" → \"f 1 3 2\"; Blender: Mesh › Normals › Flip)");
     }
 
     // docs/reliability.md: the objects' triangles together, from their
@@ -612,7 +692,8 @@ private:
     bool observer_position_ok_ = true;  // the position alone is usable
     std::vector<bool> shape_ok_;
     std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
-    std::vector<Box> boxes_;  // each hull's bounding box (empty: no hull)
+    std::vector<Box> boxes_;
+    bool relations_ = true;  // false: check_renderable (no relations between entities)  // each hull's bounding box (empty: no hull)
     std::unordered_map<std::string, std::vector<std::size_t>> light_positions_;
 };
 
@@ -631,6 +712,11 @@ std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangl
     return validate_scene(scene, {}, triangle_budget);
 }
 
+void check_renderable(const Scene& scene) {
+    std::vector<Diagnostic> errors = Validator(scene, {}, default_triangle_budget).run_values_only();
+    if (!errors.empty()) throw SceneError(std::move(errors));
+}
+
 std::uint64_t triangles_of(const Shape& shape) {
     struct Count {
         std::uint64_t operator()(const CubeShape&) const { return 12; }
@@ -647,6 +733,9 @@ std::uint64_t triangles_of(const Shape& shape) {
             return 32 * 2 * s * s;
         }
         std::uint64_t operator()(const MeshFileShape&) const { return 0; }
+        std::uint64_t operator()(const MeshDataShape& data) const {
+            return data.mesh ? data.mesh->triangles.size() : 0;
+        }
     };
     return std::visit(Count{}, shape);
 }

@@ -102,6 +102,11 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
             } else if constexpr (std::is_same_v<S, TeapotShape>) {
                 text += "type = \"teapot\"\nsize = " + number(shape.size) +
                         "\nsubdivisions = " + std::to_string(shape.subdivisions) + "\n";
+            } else if constexpr (std::is_same_v<S, MeshDataShape>) {
+                throw ArgumentError(
+                    (object.name.empty() ? std::string("an object") : "object '" + object.name + "'") +
+                    " has an in-memory mesh, which a scene file cannot hold: write it as an OBJ "
+                    "file (litkit::mesh_to_obj) and use a MeshFileShape that names the file");
             } else {
                 // Relative to the written file where it can be, else absolute.
                 std::filesystem::path file = std::filesystem::absolute(shape.file);
@@ -152,7 +157,7 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
             text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
     }
     text += "\n[output]\nwidth = " + std::to_string(scene.output.width) + "\nheight = " +
-            std::to_string(scene.output.height) + "\nbackground = " + rgb8(scene.output.background) +
+            std::to_string(scene.output.height) + "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +
             "\ngamma = " + number(scene.output.gamma) + "\n";
     for (const SceneLight& light : scene.lights) text += light_text(light);
     for (const SceneObject& object : scene.objects) text += object_text(object, folder);

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 
 namespace litkit {
 

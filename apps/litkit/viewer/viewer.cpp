@@ -24,7 +24,7 @@
 #include <variant>
 
 #include "litkit/error.hpp"
-#include "litkit/files.hpp"
+#include "core/files.hpp"
 #include "litkit/gl_renderer.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
