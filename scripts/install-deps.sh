@@ -26,6 +26,9 @@ packages=(
   libimgui-dev libstb-dev xdotool x11-apps
   # test_teach parses explain --json with Python's json module.
   python3
+  # The API reference (target docs; its test fails on any warning) and the
+  # man page made from --help, rendered by groff in its test.
+  doxygen help2man groff-base
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)
