@@ -120,8 +120,8 @@ void for_each_model_parameter(F&& f, Materials&&... materials) {
     f(ModelParameter{"minnaert_k", 0.0f, 4.0f, false}, materials.minnaert_k...);
 }
 
-/// Light kinds: a closed set behind one variant (docs/spec.md §4 table).
-/// An ambient light lights every point equally, from no direction.
+// Light kinds: a closed set behind one variant (docs/spec.md §4 table).
+/// An ambient light: it lights every point equally, from no direction.
 struct AmbientLight {};
 /// A light infinitely far away: parallel rays, no attenuation.
 struct DirectionalLight {
@@ -147,7 +147,7 @@ struct SpotLight {
     float exponent = 0.0f;
     float penumbra = 0.0f;  ///< docs/spec.md §9.3: the soft fraction of the cone, 0–1
 };
-/// Any one of the light kinds.
+/// Any one of the light kinds: a closed set behind one variant (docs/spec.md §4 table).
 using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotLight>;
 
 /// A light: its kind (with the kind's geometry), colour and intensity.
