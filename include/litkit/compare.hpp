@@ -21,8 +21,8 @@ struct CompareOptions {
     /// scene's shading) or one column (shading models, with its reflection).
     enum class Vary {
         Both,        ///< Every reflection × shading pair: a grid.
-        Reflection,  ///< Every reflection model, with the scene's shading: one column of rows.
-        Shading      ///< Every shading model, with the scene's reflection: one row of columns.
+        Reflection,  ///< A row per reflection model, in one column of the scene's shading.
+        Shading      ///< A column per shading model, in one row of the scene's reflection.
     };
     /// Which models vary.
     Vary vary = Vary::Both;

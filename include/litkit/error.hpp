@@ -16,7 +16,7 @@ namespace litkit {
 /// A place in a source file, printed the way compilers and editors expect:
 /// "scene.toml:14:12". Line and column are 1-based; 0 means "unknown".
 struct FileLoc {
-    std::string file;          ///< The file's path as given; empty: no file (the default scene, a string).
+    std::string file;          ///< The file's path as given (or the name text was parsed under); empty: none.
     std::uint32_t line = 0;    ///< 1-based line; 0: unknown.
     std::uint32_t column = 0;  ///< 1-based column; 0: unknown.
 
@@ -73,7 +73,7 @@ public:
     /// `warnings` are those found alongside the errors, kept apart so that
     /// diagnostics() holds exactly the errors.
     explicit SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings = {});
-    /// Every error found, in the order found; never empty when thrown.
+    /// Every error found, in the order found.
     const std::vector<Diagnostic>& diagnostics() const noexcept { return diagnostics_; }
     /// The warnings found alongside the errors.
     const std::vector<Diagnostic>& warnings() const noexcept { return warnings_; }
