@@ -25,7 +25,7 @@ endif()
 # roff: a section, then each command as a subsection whose help is kept as
 # printed (.nf/.fi), with backslashes, minus signs and leading dots and
 # quotes escaped.
-set(text "[COMMANDS]\nEach command has options of its own; `litkit COMMAND --help` prints them.\n")
+set(text "[COMMANDS]\nEach command has options of its own, which \\fBlitkit\\fR \\fICOMMAND\\fR \\fB\\-\\-help\\fR prints:\n")
 foreach(name IN LISTS names)
     string(STRIP "${name}" name)
     execute_process(COMMAND ${program_name} ${name} --help OUTPUT_VARIABLE help RESULT_VARIABLE status)
