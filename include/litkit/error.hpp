@@ -16,7 +16,8 @@ namespace litkit {
 /// A place in a source file, printed the way compilers and editors expect:
 /// "scene.toml:14:12". Line and column are 1-based; 0 means "unknown".
 struct FileLoc {
-    std::string file;          ///< The file's path as given (or the name text was parsed under); empty: none.
+    /// The file's path as given (or the name text was parsed under); empty: none.
+    std::string file;
     std::uint32_t line = 0;    ///< 1-based line; 0: unknown.
     std::uint32_t column = 0;  ///< 1-based column; 0: unknown.
 

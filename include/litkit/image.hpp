@@ -15,7 +15,7 @@ struct Image {
     int width = 0;
     /// Height in pixels.
     int height = 0;
-    std::vector<std::uint8_t> rgb;  ///< width · height · 3: r, g, b of each pixel, rows top to bottom
+    std::vector<std::uint8_t> rgb;  ///< width · height · 3: r, g, b per pixel, rows top down
 
     /// An empty image, 0 × 0.
     Image() = default;
