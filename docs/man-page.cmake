@@ -1,9 +1,12 @@
-# Writes a help2man include file with a COMMANDS section: the `--help` of
-# every command that `litkit --help` lists, so that the man page carries each
-# command's options, not only the top level's. The list of commands is read
-# from the program itself, so a new command appears without editing this.
+# Builds litkit.1 with help2man from `litkit --help` and `litkit --version`,
+# the text of docs/litkit.h2m, and a COMMANDS section written here: the
+# `--help` of every command that `litkit --help` lists, so that the man page
+# carries each command's options, not only the top level's. The list of
+# commands is read from the program itself, so a new command appears without
+# editing this.
 #
-#   cmake -DLITKIT=path/to/litkit -DOUTPUT=commands.h2m -P man-commands.cmake
+#   cmake -DLITKIT=path/to/litkit -DHELP2MAN=help2man -DINCLUDE=litkit.h2m
+#         -DOUTPUT=litkit.1 -P man-page.cmake
 
 # The program runs under its own name (as help2man runs it), so that its
 # usage lines read "litkit render", not the build path.
@@ -37,4 +40,16 @@ foreach(name IN LISTS names)
     string(REPLACE "-" "\\-" help "${help}")  # minus signs, not hyphens: options copy as typed
     string(APPEND text ".SS \"litkit ${name}\"\n.nf\n${help}.fi\n")
 endforeach()
-file(WRITE ${OUTPUT} "${text}")
+set(commands_include ${OUTPUT}-commands.h2m)
+file(WRITE ${commands_include} "${text}")
+
+# The COMMANDS section comes first among the sections help2man adds after
+# OPTIONS, so its include goes first.
+execute_process(COMMAND ${HELP2MAN} --no-info --section=1
+                        "--name=render lit, shaded 3D scenes from scene files"
+                        --include=${commands_include} --include=${INCLUDE}
+                        --output=${OUTPUT} ${program_name}
+                RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+    message(FATAL_ERROR "help2man failed (${status})")
+endif()
