@@ -38,9 +38,12 @@ done
 # 2. A copy of the headers with one undocumented function added: the run must
 # fail, naming it. Guards the configuration itself (EXTRACT_ALL = NO,
 # WARN_IF_UNDOCUMENTED, WARN_AS_ERROR) against a change that silences it.
+# An undocumented function in a `detail` namespace is added too: internal,
+# so it must not be reported (EXCLUDE_SYMBOLS).
 mkdir -p "$scratch/include"
 cp -r "$source_dir/include/litkit" "$scratch/include/"
 printf '\nnamespace litkit {\nint undocumented_on_purpose(int x);\n}\n' >> "$scratch/include/litkit/image.hpp"
+printf '\nnamespace litkit::detail {\nint internal_on_purpose(int x);\n}\n' >> "$scratch/include/litkit/image.hpp"
 if run undocumented "INPUT = $scratch/include/litkit" "STRIP_FROM_PATH = $scratch/include" \
      "STRIP_FROM_INC_PATH = $scratch/include" "USE_MDFILE_AS_MAINPAGE ="; then
   echo "FAIL: Doxygen passed with an undocumented public function" >&2
@@ -51,4 +54,9 @@ if ! grep -q "undocumented_on_purpose" "$scratch/undocumented.log"; then
   cat "$scratch/undocumented.log" >&2
   exit 1
 fi
-echo "docs: clean; an undocumented name fails the run"
+if grep -q "internal_on_purpose" "$scratch/undocumented.log"; then
+  echo "FAIL: Doxygen reports a name of a detail namespace (EXCLUDE_SYMBOLS):" >&2
+  cat "$scratch/undocumented.log" >&2
+  exit 1
+fi
+echo "docs: clean; an undocumented name fails the run; detail namespaces are left out"
