@@ -31,6 +31,9 @@ packages=(
   # the CLI's PNGs independently) and IPython (whose display formatter shows
   # that pictures display inline in Jupyter).
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pil python3-ipython
+  # The API reference (target docs; its test fails on any warning) and the
+  # man page made from --help, rendered by groff in its test.
+  doxygen help2man groff-base
 )
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)

@@ -1,12 +1,13 @@
-// The one home of the lighting equations (docs/spec.md §4). Every path evaluates
-// these templates: the scalar `shade` with T = float, the renderer's
-// per-vertex and per-pixel stages, and later SIMD batches and the GLSL
-// generator, each with its own T.
-//
-// A T must provide + - * /, comparisons yielding a mask, and, found by
-// argument-dependent lookup (or declared below for float): sqrt, pow, max,
-// min, floor, select(mask, if_true, if_false). Branches on values are written as select so
-// that the same text works for one point or for a batch of points.
+/// \file
+/// The one home of the lighting equations (docs/spec.md §4). Every path evaluates
+/// these templates: the scalar `shade` with T = float, the renderer's
+/// per-vertex and per-pixel stages, and later SIMD batches and the GLSL
+/// generator, each with its own T.
+///
+/// A T must provide + - * /, comparisons yielding a mask, and, found by
+/// argument-dependent lookup (or declared below for float): sqrt, pow, max,
+/// min, floor, select(mask, if_true, if_false). Branches on values are written as select so
+/// that the same text works for one point or for a batch of points.
 #pragma once
 
 #include "litkit/lighting.hpp"
@@ -18,21 +19,38 @@
 #include <type_traits>
 #include <utility>
 
+/// The lighting equations as templates on the scalar type T (float, a SIMD
+/// batch, a GLSL expression): one text for every path (see equations.hpp).
 namespace litkit::equations {
 
-// Scalar versions of the primitive operations, so float works like a batch.
+/// \name Scalar primitives
+/// Scalar versions of the primitive operations, so float works like a batch.
+//@{
+/// mask ? if_true : if_false, the float form of a batch's blend.
 inline float select(bool mask, float if_true, float if_false) { return mask ? if_true : if_false; }
+/// The larger of a and b.
 inline float max(float a, float b) { return a > b ? a : b; }
+/// The smaller of a and b.
 inline float min(float a, float b) { return a < b ? a : b; }
 using std::floor;
 using std::pow;
 using std::sqrt;
+//@}
 
+/// A 3-vector of T: a point, direction or RGB colour, one per lane of a batch.
 template <class T>
 struct Vec3 {
+    /// \name Components
+    //@{
+    /// The components: a point's or direction's x, y, z; a colour's r, g, b.
     T x, y, z;
+    //@}
 };
 
+/// \name Vector arithmetic
+/// Component-wise, as GLSL's vec3 (products by a scalar and per channel).
+//@{
+/// The same vector in every lane: each component converted to T.
 template <class T>
 Vec3<T> splat(const glm::vec3& v) {
     return {T(v.x), T(v.y), T(v.z)};
@@ -70,16 +88,27 @@ template <class T>
 Vec3<T> normalize(const Vec3<T>& a) {
     return (T(1) / length(a)) * a;
 }
+//@}
 
-// Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d,
-// k_s, α, and the parameters of §9.1, named as in Material so that
-// for_each_model_parameter visits both).
+/// Material with coefficients of type T (docs/spec.md §4 symbols C, k_a, k_d,
+/// k_s, α, and the parameters of §9.1, named as in Material so that
+/// for_each_model_parameter visits both).
 template <class T>
 struct MaterialT {
+    /// C, per channel in [0, 1], as Material::color.
     Vec3<T> color;
+    /// \name Coefficients of §4
+    //@{
+    /// k_a, k_d, k_s and α, as the Material fields of the same names.
     T ka, kd, ks, shininess;
+    //@}
+    /// \name Parameters of §9.1
+    //@{
+    /// The parameters of §9.1, as the Material fields of the same names.
     T sigma{}, roughness{}, f0{}, bands{}, minnaert_k{};
+    //@}
 };
+/// The material in every lane: each coefficient converted to T.
 template <class T>
 MaterialT<T> splat(const Material& m) {
     MaterialT<T> result{splat<T>(m.color), T(m.ka), T(m.kd), T(m.ks), T(m.shininess)};
@@ -90,28 +119,31 @@ MaterialT<T> splat(const Material& m) {
 
 // ---- Light directions and factors (docs/spec.md §4, first table) ----
 
-// Where a light comes from at a surface point: L (unit, towards the light)
-// and the factor f.
+/// Where a light comes from at a surface point: L (unit, towards the light)
+/// and the factor f.
 template <class T>
 struct Incidence {
+    /// L: unit, from the point towards the light.
     Vec3<T> to_light;
+    /// f: the attenuation times the spot factor; 1 for a directional light.
     T factor;
 };
 
-// DD7 generalised: f = 1 / (k_c + k_l·d + k_q·d²).
+/// DD7 generalised: f = 1 / (k_c + k_l·d + k_q·d²); `coefficients` is
+/// (k_c, k_l, k_q), `distance` is d in world units.
 template <class T>
 T distance_attenuation(const Vec3<T>& coefficients, const T& distance) {
     return T(1) / (coefficients.x + coefficients.y * distance + coefficients.z * distance * distance);
 }
 
-// Directional light: L = −normalize(direction), f = 1. `travel_unit` is the
-// normalised direction the light travels.
+/// Directional light: L = −normalize(direction), f = 1. `travel_unit` is the
+/// normalised direction the light travels.
 template <class T>
 Incidence<T> directional_incidence(const Vec3<T>& travel_unit) {
     return {-travel_unit, T(1)};
 }
 
-// Point light: L = normalize(position − p), f = attenuation at distance d.
+/// Point light: L = normalize(position − p), f = attenuation at distance d.
 template <class T>
 Incidence<T> point_incidence(const Vec3<T>& light_position, const Vec3<T>& attenuation,
                              const Vec3<T>& p) {
@@ -120,15 +152,15 @@ Incidence<T> point_incidence(const Vec3<T>& light_position, const Vec3<T>& atten
     return {(T(1) / distance) * to_light, distance_attenuation(attenuation, distance)};
 }
 
-// The spot boundary is inclusive (c ≥ cos(cutoff)); this much slack in the
-// cosine keeps a point exactly on the cone inside despite float rounding. It
-// applies to the comparisons only, not to the soft edge's interpolation.
+/// The spot boundary is inclusive (c ≥ cos(cutoff)); this much slack in the
+/// cosine keeps a point exactly on the cone inside despite float rounding. It
+/// applies to the comparisons only, not to the soft edge's interpolation.
 inline constexpr float spot_boundary_slack = 1e-6f;
 
-// Spot cone: c = −L·axis; s = c^exponent · w where c ≥ cos θo (0^0 = 1), else
-// 0, with the soft edge of docs/spec.md §9.3: w = 1 where c ≥ cos θi, else
-// t²(3 − 2t), t = (c − cos θo)/(cos θi − cos θo). With penumbra 0, θi = θo and
-// w = 1 throughout the cone. `axis_unit` is the normalised spot direction.
+/// Spot cone: c = −L·axis; s = c^exponent · w where c ≥ cos θo (0^0 = 1), else
+/// 0, with the soft edge of docs/spec.md §9.3: w = 1 where c ≥ cos θi, else
+/// t²(3 − 2t), t = (c − cos θo)/(cos θi − cos θo). With penumbra 0, θi = θo and
+/// w = 1 throughout the cone. `axis_unit` is the normalised spot direction.
 template <class T>
 T spot_factor(const Vec3<T>& to_light, const Vec3<T>& axis_unit, const T& cos_cutoff,
               const T& cos_inner, const T& exponent) {
@@ -141,34 +173,37 @@ T spot_factor(const Vec3<T>& to_light, const Vec3<T>& axis_unit, const T& cos_cu
 
 // ---- Reflection models (docs/spec.md §4, second table; IM1–IM4) ----
 
+/// A model's two terms for one light (docs/spec.md §4.3).
 template <class T>
 struct Terms {
-    T diffuse;   // D
-    T specular;  // S
+    T diffuse;   ///< D
+    T specular;  ///< S
 };
 
-// max(base, 0)^α, and exactly 0 wherever base ≤ 0 whatever α (never 0^0).
+/// max(base, 0)^α, and exactly 0 wherever base ≤ 0 whatever α (never 0^0).
 template <class T>
 T specular_power(const T& base, const T& shininess) {
     return select(base > T(0), pow(max(base, T(0)), shininess), T(0));
 }
 
-// Where a model's named intermediate values go (A and B of Oren–Nayar, D_GGX,
-// Vis and F of Cook–Torrance, ...): nowhere by default, at no cost; a caller
-// that wants to show the arithmetic (litkit::shade_terms) passes a recorder.
+/// Where a model's named intermediate values go (A and B of Oren–Nayar, D_GGX,
+/// Vis and F of Cook–Torrance, ...): nowhere by default, at no cost; a caller
+/// that wants to show the arithmetic (litkit::shade_terms) passes a recorder.
 struct NoTrace {
+    /// One named intermediate value ("A", 0.87): ignored.
     template <class T>
     void operator()(const char*, const T&) const {}
-    // reflect and shade_point also report D and S and each light's part
-    // (litkit::shade_terms).
+    /// reflect and shade_point also report D and S and each light's part
+    /// (litkit::shade_terms). The model's Terms: ignored.
     template <class... Parts>
     void model_terms(const Parts&...) const {}
+    /// One light's part of I, with its incidence and reflection: ignored.
     template <class... Parts>
     void light(const Parts&...) const {}
 };
 
-// D and S for a model of the diffuse + specular form at unit normal N, unit
-// L, unit V (docs/spec.md §4, second table, and §9.1).
+/// D and S for a model of the diffuse + specular form at unit normal N, unit
+/// L, unit V (docs/spec.md §4, second table, and §9.1).
 template <Reflection R, class T, class Trace = NoTrace>
 Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
                           const MaterialT<T>& material, const Trace& trace = {}) {
@@ -245,19 +280,22 @@ Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const 
     }
 }
 
-// What multiplies f·I_L for one light: the diffuse colour, as a weight
-// times a colour (k_d·D and C for most models), and the specular S (which
-// takes the light's colour, times k_s).
+/// What multiplies f·I_L for one light: the diffuse colour, as a weight
+/// times a colour (k_d·D and C for most models), and the specular S (which
+/// takes the light's colour, times k_s).
 template <class T>
 struct Reflected {
+    /// The diffuse weight: k_d·D (1 for gooch).
     T diffuse;
+    /// The colour the weight multiplies: C (gooch: its wash).
     Vec3<T> color;
+    /// S, before k_s.
     T specular;
 };
 
-// The reflection of model R: k_d·D·C and S for the diffuse + specular
-// models; for `gooch` (docs/spec.md §9.1) the cool-to-warm wash
-// t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
+/// The reflection of model R: k_d·D·C and S for the diffuse + specular
+/// models; for `gooch` (docs/spec.md §9.1) the cool-to-warm wash
+/// t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
 template <Reflection R, class T, class Trace = NoTrace>
 Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
                      const MaterialT<T>& material, const Trace& trace = {}) {
@@ -286,13 +324,13 @@ Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<
 
 // ---- Colour (docs/spec.md §4, DD3–DD6) ----
 
-// k_a · C · I_L for an ambient light.
+/// k_a · C · I_L for an ambient light.
 template <class T>
 Vec3<T> ambient_term(const Vec3<T>& radiance, const MaterialT<T>& material) {
     return material.ka * (material.color * radiance);
 }
 
-// f · I_L · (k_d · D · C + k_s · S): specular takes the light's colour.
+/// f · I_L · (k_d · D · C + k_s · S): specular takes the light's colour.
 template <class T>
 Vec3<T> direct_term(const Vec3<T>& radiance, const T& factor, const Reflected<T>& reflected,
                     const MaterialT<T>& material) {
@@ -304,25 +342,34 @@ Vec3<T> direct_term(const Vec3<T>& radiance, const T& factor, const Reflected<T>
     return factor * (radiance * reflectance);
 }
 
-// A light reduced to plain numbers, ready for any T: directions normalised,
-// cos(cutoff) computed once. Built by `prepare_lights`.
+/// A light reduced to plain numbers, ready for any T: directions normalised,
+/// cos(cutoff) computed once. Built by `prepare_light`.
 struct PreparedLight {
-    enum class Kind { Ambient, Directional, Point, Spot };
+    /// Which kind of Light it came from (the alternatives of LightKind).
+    enum class Kind {
+        Ambient,      ///< AmbientLight
+        Directional,  ///< DirectionalLight
+        Point,        ///< PointLight
+        Spot          ///< SpotLight
+    };
+    /// The kind; it says which fields below are used.
     Kind kind = Kind::Ambient;
-    glm::vec3 radiance{0.0f};     // I_L
-    glm::vec3 position{0.0f};     // point, spot
-    glm::vec3 direction{0.0f};    // unit; directional: travel direction; spot: axis
-    glm::vec3 attenuation{0.0f};  // point, spot
-    float cos_cutoff = 0.0f;      // spot: cos θo
-    float cos_inner = 0.0f;       // spot: cos θi (docs/spec.md §9.3)
-    float exponent = 0.0f;        // spot
+    glm::vec3 radiance{0.0f};     ///< I_L
+    glm::vec3 position{0.0f};     ///< point, spot
+    glm::vec3 direction{0.0f};    ///< unit; directional: travel direction; spot: axis
+    glm::vec3 attenuation{0.0f};  ///< point, spot
+    float cos_cutoff = 0.0f;      ///< spot: cos θo
+    float cos_inner = 0.0f;       ///< spot: cos θi (docs/spec.md §9.3)
+    float exponent = 0.0f;        ///< spot
 };
 
+/// `light` as plain numbers: its radiance, its direction normalised, its
+/// cone's cosines.
 PreparedLight prepare_light(const Light& light);
 
-// The one place a run-time Reflection becomes a template argument: calls
-// f(std::integral_constant<Reflection, R>{}) for the model chosen. Adding a
-// reflection model adds its case here and its branch in reflection_terms.
+/// The one place a run-time Reflection becomes a template argument: calls
+/// f(std::integral_constant<Reflection, R>{}) for the model chosen. Adding a
+/// reflection model adds its case here and its branch in reflection_terms.
 template <int I = 0, class F>
 decltype(auto) with_reflection(Reflection reflection, F&& f) {
     constexpr auto model = static_cast<Reflection>(I);
@@ -332,15 +379,16 @@ decltype(auto) with_reflection(Reflection reflection, F&& f) {
     return f(std::integral_constant<Reflection, model>{});
 }
 
-// shade_point for one point with plain floats: the scalar path that
-// litkit::shade and the renderer's per-vertex and per-triangle stages share.
-// `normal` unit length; V is normalize(eye − position).
+/// shade_point for one point with plain floats: the scalar path that
+/// litkit::shade and the renderer's per-vertex and per-triangle stages share.
+/// `normal` unit length; V is normalize(eye − position). Does not check its
+/// arguments (litkit::shade does).
 glm::vec3 shade_scalar(Reflection reflection, std::span<const PreparedLight> lights,
                        const MaterialT<float>& material, const glm::vec3& position,
                        const glm::vec3& normal, const glm::vec3& eye);
 
-// I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S) at point p with
-// unit normal N and unit V (docs/spec.md §4). Unclamped.
+/// I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S) at point p with
+/// unit normal N and unit V (docs/spec.md §4). Unclamped.
 template <Reflection R, class T, class Trace = NoTrace>
 Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& material,
                     const Vec3<T>& p, const Vec3<T>& normal, const Vec3<T>& to_eye,

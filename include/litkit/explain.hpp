@@ -1,6 +1,7 @@
-// `litkit explain`: how one pixel of `litkit render` got its value, step by
-// step in the symbols of docs/spec.md, or the equations at a point of the
-// caller's choosing (docs/learning.md).
+/// \file
+/// `litkit explain`: how one pixel of `litkit render` got its value, step by
+/// step in the symbols of docs/spec.md, or the equations at a point of the
+/// caller's choosing (docs/learning.md).
 #pragma once
 
 #include <array>
@@ -15,56 +16,68 @@
 
 namespace litkit {
 
-// One evaluation of the lighting equations (docs/spec.md §4): at p with unit
-// normal N, seen from the eye, and what each light gave.
+/// One evaluation of the lighting equations (docs/spec.md §4): at p with unit
+/// normal N, seen from the eye, and what each light gave.
 struct PointEvaluation {
-    glm::vec3 position{0.0f};  // p
-    glm::vec3 normal{0.0f};    // N, unit
-    glm::vec3 to_eye{0.0f};    // V
-    ShadeTerms terms;          // per light, and I
+    glm::vec3 position{0.0f};  ///< p
+    glm::vec3 normal{0.0f};    ///< N, unit
+    glm::vec3 to_eye{0.0f};    ///< V
+    ShadeTerms terms;          ///< per light, and I
 };
 
+/// How one pixel got its value: the triangle it shows and the evaluations
+/// of the lighting that the shading model made for it.
 struct PixelExplanation {
+    /// \name The pixel
+    //@{
+    /// The pixel's column (from the left) and row (from the top).
     int x = 0, y = 0;
-    bool hit = false;  // false: no object covers the pixel; rgb is the background
-    Rgb8 rgb{};        // the pixel `litkit render` writes
+    //@}
+    bool hit = false;  ///< false: no object covers the pixel; rgb is the background
+    Rgb8 rgb{};        ///< the pixel `litkit render` writes
+    /// The scene's gamma, which turned `sum` into `rgb`.
     float gamma = 1.0f;
 
-    // When hit:
+    /// When hit: the index into Scene::objects of the object shown.
     std::size_t object = 0;
-    std::string object_name;  // may be empty
+    std::string object_name;  ///< may be empty
+    /// The triangle within the object's mesh.
     std::size_t triangle = 0;
-    Reflection reflection = Reflection::Phong;  // the object's, after overrides
+    Reflection reflection = Reflection::Phong;  ///< the object's, after overrides
+    /// The object's shading model, after overrides.
     Shading shading = Shading::Phong;
-    std::array<glm::vec3, 3> corners{};         // the triangle's corners, world space
-    std::array<glm::vec3, 3> corner_normals{};  // their vertex normals (DD9)
-    glm::vec3 face_normal{0.0f};                // DD8
-    bool clipped = false;            // crosses the near plane: weights are the clipped piece's
-    std::array<float, 3> weights{};  // perspective-correct, of the corners
-    // flat: one, at the centroid with the face normal; gouraud: three, one per
-    // corner, whose colours the weights mix; phong: one, at the pixel.
+    std::array<glm::vec3, 3> corners{};         ///< the triangle's corners, world space
+    std::array<glm::vec3, 3> corner_normals{};  ///< their vertex normals (DD9)
+    glm::vec3 face_normal{0.0f};                ///< DD8
+    bool clipped = false;            ///< crosses the near plane: weights are the clipped piece's
+    std::array<float, 3> weights{};  ///< perspective-correct, of the corners
+    /// flat: one, at the centroid with the face normal; gouraud: three, one per
+    /// corner, whose colours the weights mix; phong: one, at the pixel.
     std::vector<PointEvaluation> evaluations;
-    glm::vec3 sum{0.0f};  // I before clamping, exactly as the renderer had it
+    glm::vec3 sum{0.0f};  ///< I before clamping, exactly as the renderer had it
 };
 
-// Renders the scene (CPU backend) and explains pixel (x, y). Objects' and
-// [lighting]'s models as `render` uses them; `options` as for render.
-// Throws ArgumentError for a pixel outside the image.
+/// Renders the scene (CPU backend) and explains pixel (x, y). Objects' and
+/// [lighting]'s models as `render` uses them; `options` as for render.
+/// Throws ArgumentError for a pixel outside the image.
 PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOptions& options = {});
 
-// The equations at point p with normal N (normalised here; it must not be
-// zero) under the scene's lights, seen from its observer, for a material and
-// model of the caller's choosing.
+/// The equations at point p with normal N (normalised here; it must not be
+/// zero) under the scene's lights, seen from its observer, for a material and
+/// model of the caller's choosing.
 PointEvaluation explain_point(const Scene& scene, Reflection reflection, const Material& material,
                               const glm::vec3& position, const glm::vec3& normal);
 
-// The explanation as text, step by step in the symbols of docs/spec.md (what
-// `litkit explain` prints), and as one JSON object (`--json`; its keys are
-// listed in docs/learning.md).
+/// The explanation as text, step by step in the symbols of docs/spec.md (what
+/// `litkit explain` prints).
 std::string explanation_text(const PixelExplanation& explanation, const Scene& scene);
+/// The explanation as one JSON object (`--json`; its keys are listed in
+/// docs/learning.md).
 std::string explanation_json(const PixelExplanation& explanation, const Scene& scene);
+/// An explain_point result as text, step by step (what `litkit explain --at` prints).
 std::string evaluation_text(const PointEvaluation& point, const Scene& scene, Reflection reflection,
                             const Material& material);
+/// An explain_point result as one JSON object (`--at` with `--json`).
 std::string evaluation_json(const PointEvaluation& point, const Scene& scene,
                             Reflection reflection);
 

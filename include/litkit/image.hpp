@@ -1,4 +1,5 @@
-// 8-bit RGB images and PNG output.
+/// \file
+/// 8-bit RGB images and PNG output.
 #pragma once
 
 #include <cstdint>
@@ -8,31 +9,38 @@
 
 namespace litkit {
 
-// Row-major 8-bit RGB, row 0 at the top (docs/spec.md §1).
+/// Row-major 8-bit RGB, row 0 at the top (docs/spec.md §1).
 struct Image {
+    /// Width in pixels.
     int width = 0;
+    /// Height in pixels.
     int height = 0;
-    std::vector<std::uint8_t> rgb;  // width · height · 3
+    std::vector<std::uint8_t> rgb;  ///< width · height · 3: r, g, b per pixel, rows top down
 
+    /// An empty image, 0 × 0.
     Image() = default;
+    /// A black image of `w` × `h` pixels (both ≥ 0).
     Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
+    /// The r, g, b bytes of pixel (x, y), x from the left, y from the top.
+    /// Not checked: 0 ≤ x < width and 0 ≤ y < height is the caller's to keep.
     std::uint8_t* pixel(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+    /// The r, g, b bytes of pixel (x, y), read only; not checked either.
     const std::uint8_t* pixel(int x, int y) const {
         return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
     }
 };
 
-// The PNG file bytes of `image` (8-bit RGB). zlib `compression_level` 0–9;
-// the default, 1, is the measured best trade of time for size on rendered
-// pictures (docs/performance.md).
+/// The zlib level encode_png uses unless told: 1, the measured best trade of
+/// time for size on rendered pictures (docs/performance.md).
 inline constexpr int default_png_compression = 1;
+/// The PNG file bytes of `image` (8-bit RGB), zlib `compression_level` 0–9.
 std::string encode_png(const Image& image, int compression_level = default_png_compression);
 
-// Writes `image` as a PNG, whole or not at all (write_file_atomically).
-// Throws IoError (Access::Write) on failure, leaving any old file untouched.
+/// Writes `image` as a PNG, whole or not at all (write_file_atomically).
+/// Throws IoError (Access::Write) on failure, leaving any old file untouched.
 void write_png(const Image& image, const std::filesystem::path& path);
 
-// Reads an 8-bit RGB or RGBA PNG (alpha dropped). Throws IoError.
+/// Reads an 8-bit RGB or RGBA PNG (alpha dropped). Throws IoError.
 Image read_png(const std::filesystem::path& path);
 
 }  // namespace litkit

@@ -1,7 +1,8 @@
-// The lighting-model family of docs/spec.md §3–§4: reflection models, shading models,
-// lights and materials, and `shade`, which evaluates the colour at one
-// surface point. Students and tests call `shade` directly; the renderers
-// evaluate the very same equations (litkit/equations.hpp).
+/// \file
+/// The lighting-model family of docs/spec.md §3–§4: reflection models, shading models,
+/// lights and materials, and `shade`, which evaluates the colour at one
+/// surface point. Students and tests call `shade` directly; the renderers
+/// evaluate the very same equations (litkit/equations.hpp).
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -45,37 +46,50 @@ inline Rgb8 to_rgb8(const glm::vec3& color) {
 // (lighting.cpp) and its branch in equations::reflect are all a new model
 // needs; every path (scalar, SIMD, GLSL, validation) follows from them.
 enum class Reflection {
-    Lambert,
-    HalfLambert,
-    Phong,
-    BlinnPhong,
-    OrenNayar,
-    CookTorrance,
-    Toon,
-    Minnaert,
-    Gooch,
+    Lambert,       ///< "lambert": diffuse only, D = max(N·L, 0).
+    HalfLambert,   ///< "half-lambert": Valve's wrapped diffuse, D = (0.5·N·L + 0.5)².
+    Phong,         ///< "phong": Lambert plus the mirror highlight max(R·V, 0)^α.
+    BlinnPhong,    ///< "blinn-phong": Lambert plus the half-vector highlight max(N·H, 0)^α.
+    OrenNayar,     ///< "oren-nayar": rough diffuse, roughness `sigma` (§9.1).
+    CookTorrance,  ///< "cook-torrance": GGX microfacets, `roughness` and `f0` (§9.1).
+    Toon,          ///< "toon": diffuse in `bands` flat steps, a highlight on or off (§9.1).
+    Minnaert,      ///< "minnaert": limb darkening, exponent `minnaert_k` (§9.1).
+    Gooch,         ///< "gooch": cool-to-warm technical illustration (§9.1).
 };
+/// How many Reflection values there are (for arrays indexed by model).
 inline constexpr int reflection_count = static_cast<int>(Reflection::Gooch) + 1;
 
-// One reflection model as users see it: its scene-file name and a one-line
-// summary of its equations (printed into generated shaders).
+/// One reflection model as users see it: its scene-file name and a one-line
+/// summary of its equations (printed into generated shaders).
 struct ReflectionModel {
+    /// The model.
     Reflection id;
+    /// Its scene-file spelling, as to_string(Reflection) gives it.
     std::string_view name;
+    /// Its equations in one line.
     std::string_view summary;
 };
-// Every model, in the order of the enumeration.
+/// Every model, in the order of the enumeration.
 std::span<const ReflectionModel> reflection_models();
-// docs/spec.md §3, DD8–DD10, and §9.2's faceted: lit per pixel with the face normal.
-enum class Shading { Flat, Gouraud, Phong, Faceted };
+/// Where the lighting is evaluated, and with which normal (docs/spec.md §3,
+/// DD8–DD10, and §9.2).
+enum class Shading {
+    Flat,     ///< "flat": once per triangle, at its centroid with the face normal.
+    Gouraud,  ///< "gouraud": at the vertices, colours interpolated across the triangle.
+    Phong,    ///< "phong": per pixel, with interpolated and renormalised vertex normals.
+    Faceted   ///< "faceted": per pixel, with the face normal (§9.2).
+};
+/// How many Shading values there are.
 inline constexpr int shading_count = static_cast<int>(Shading::Faceted) + 1;
 
-// Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
-// "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
+/// Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
+/// "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
 std::string_view to_string(Reflection reflection);
-// Scene-file spelling: "flat", "gouraud", "phong", "faceted".
+/// Scene-file spelling: "flat", "gouraud", "phong", "faceted".
 std::string_view to_string(Shading shading);
+/// The model a scene-file spelling names (exact, lower case), or nothing.
 std::optional<Reflection> parse_reflection(std::string_view text);
+/// The shading model a scene-file spelling names (exact, lower case), or nothing.
 std::optional<Shading> parse_shading(std::string_view text);
 
 // Surface coefficients. `color` is C of docs/spec.md §4, linear 0–1 per
@@ -83,33 +97,42 @@ std::optional<Shading> parse_shading(std::string_view text);
 // The parameters of docs/spec.md §9.1 are here whatever the model, so that
 // switching models keeps them; a model ignores those it does not use.
 struct Material {
+    /// C: the surface colour, per channel in [0, 1] (the scene file's 0–255 / 255).
     glm::vec3 color{1.0f, 1.0f, 1.0f};
+    /// k_a, ambient coefficient in [0, 1].
     float ka = 0.1f;
+    /// k_d, diffuse coefficient in [0, 1].
     float kd = 0.7f;
+    /// k_s, specular coefficient in [0, 1].
     float ks = 0.5f;
+    /// α, the specular exponent (≥ 0) of the models with a highlight.
     float shininess = 32.0f;
-    float sigma = 30.0f;       // oren-nayar: surface roughness σ in degrees
-    float roughness = 0.5f;    // cook-torrance: perceptual roughness r
-    float f0 = 0.04f;          // cook-torrance: reflectance at normal incidence
-    float bands = 3.0f;        // toon: how many diffuse levels (a whole number)
-    float minnaert_k = 1.5f;   // minnaert: limb darkening k
+    float sigma = 30.0f;       ///< oren-nayar: surface roughness σ in degrees
+    float roughness = 0.5f;    ///< cook-torrance: perceptual roughness r
+    float f0 = 0.04f;          ///< cook-torrance: reflectance at normal incidence
+    float bands = 3.0f;        ///< toon: how many diffuse levels (a whole number)
+    float minnaert_k = 1.5f;   ///< minnaert: limb darkening k
 };
 
-// One parameter of the models of docs/spec.md §9.1 as scene files name and
-// bound it: its key (also its name in the generated GLSL), its closed range,
-// and whether it is a whole number.
+/// One parameter of the models of docs/spec.md §9.1 as scene files name and
+/// bound it: its key (also its name in the generated GLSL), its closed range,
+/// and whether it is a whole number.
 struct ModelParameter {
+    /// The scene-file key and GLSL name ("sigma").
     std::string_view key;
+    /// The smallest value allowed.
     float low;
+    /// The largest value allowed.
     float high;
+    /// Whether only whole numbers are allowed.
     bool whole;
 };
 
-// The one list of those parameters: calls f(parameter, field...) for each,
-// with that field of every material given (Material and
-// equations::MaterialT<T> name their fields alike). The scene reader,
-// validation, the OpenGL upload and the code generators all follow it, so a
-// model's new parameter is a field of Material and MaterialT and a line here.
+/// The one list of those parameters: calls f(parameter, field...) for each,
+/// with that field of every material given (Material and
+/// equations::MaterialT<T> name their fields alike). The scene reader,
+/// validation, the OpenGL upload and the code generators all follow it, so a
+/// model's new parameter is a field of Material and MaterialT and a line here.
 template <class F, class... Materials>
 void for_each_model_parameter(F&& f, Materials&&... materials) {
     f(ModelParameter{"sigma", 0.0f, 90.0f, false}, materials.sigma...);
@@ -120,74 +143,93 @@ void for_each_model_parameter(F&& f, Materials&&... materials) {
 }
 
 // Light kinds: a closed set behind one variant (docs/spec.md §4 table).
+/// An ambient light: it lights every point equally, from no direction.
 struct AmbientLight {};
+/// A light infinitely far away: parallel rays, no attenuation.
 struct DirectionalLight {
-    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light travels; need not be unit
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  ///< the way the light travels; need not be unit
 };
+/// A light at a point, shining every way, attenuated with distance d by
+/// 1 / (k_c + k_l·d + k_q·d²).
 struct PointLight {
+    /// Where the light is, in world coordinates.
     glm::vec3 position{0.0f};
-    glm::vec3 attenuation{0.0f, 0.0f, 1.0f};  // k_c, k_l, k_q (DD7 by default)
+    glm::vec3 attenuation{0.0f, 0.0f, 1.0f};  ///< k_c, k_l, k_q (DD7 by default)
 };
+/// A point light limited to a cone: inside it the light is scaled by
+/// c^exponent, c the cosine of the angle from the axis (docs/spec.md §4.2).
 struct SpotLight {
+    /// Where the light is, in world coordinates.
     glm::vec3 position{0.0f};
+    /// k_c, k_l, k_q as for PointLight.
     glm::vec3 attenuation{0.0f, 0.0f, 1.0f};
-    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // axis of the cone; need not be unit
-    float cutoff_degrees = 30.0f;            // half-angle of the cone
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  ///< axis of the cone; need not be unit
+    float cutoff_degrees = 30.0f;            ///< half-angle of the cone, in (0, 90]
+    /// The spot exponent (≥ 0): how fast light falls off from the axis.
     float exponent = 0.0f;
-    float penumbra = 0.0f;  // docs/spec.md §9.3: the soft fraction of the cone, 0–1
+    float penumbra = 0.0f;  ///< docs/spec.md §9.3: the soft fraction of the cone, 0–1
 };
+/// Any one of the light kinds: a closed set behind one variant (docs/spec.md §4 table).
 using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotLight>;
 
+/// A light: its kind (with the kind's geometry), colour and intensity.
 struct Light {
+    /// Which kind, with its position, direction and cone.
     LightKind kind;
     glm::vec3 color{1.0f, 1.0f, 1.0f};  // linear 0–1 per channel (a scene file's colour / 255)
     float intensity = 1.0f;
 
-    // I_L of docs/spec.md §4: intensity · colour / 255.
+    /// I_L of docs/spec.md §4: intensity · colour / 255.
     glm::vec3 radiance() const { return intensity * color; }
 };
 
-// The colour I at surface point `position` with unit normal `normal`, seen
-// from `eye`, before clamping and gamma (docs/spec.md §4):
-//   I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S).
-// `normal` must be unit length (within 1e-3: the shading model decides which
-// normal that is, and a normal of another length would scale D and S);
-// throws ArgumentError otherwise, and for an eye at `position`. Light
-// directions need not be unit: they are normalised.
+/// The colour I at surface point `position` with unit normal `normal`, seen
+/// from `eye`, before clamping and gamma (docs/spec.md §4):
+///   I = Σ_ambient k_a·C·I_L + Σ_others f·I_L·(k_d·D·C + k_s·S).
+/// `normal` must be unit length (within 1e-3: the shading model decides which
+/// normal that is, and a normal of another length would scale D and S);
+/// throws ArgumentError otherwise, and for an eye at `position`. Light
+/// directions need not be unit: they are normalised. Positions are in world
+/// coordinates; the result is per channel, ≥ 0, unbounded above.
 glm::vec3 shade(Reflection reflection, const Material& material, std::span<const Light> lights,
                 const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye);
 
-// One light's part in shade(), with the values of docs/spec.md §4 and §9 that
-// gave it, for showing the arithmetic (a student checking a hand calculation,
-// `litkit explain`).
+/// One light's part in shade(), with the values of docs/spec.md §4 and §9 that
+/// gave it, for showing the arithmetic (a student checking a hand calculation,
+/// `litkit explain`).
 struct LightTerms {
+    /// Whether the light is ambient (then only `contribution` matters).
     bool ambient = false;
-    glm::vec3 to_light{0.0f};  // L (zero for an ambient light)
-    float factor = 1.0f;       // f: attenuation × spot factor (1 for directional)
-    float diffuse = 0.0f;      // D
-    float specular = 0.0f;     // S
-    // What f·I_L multiplies: weight·color + k_s·S per channel; weight = k_d·D
-    // and color = C for every model but gooch (weight 1, its cool-to-warm wash).
+    glm::vec3 to_light{0.0f};  ///< L (zero for an ambient light)
+    float factor = 1.0f;       ///< f: attenuation × spot factor (1 for directional)
+    float diffuse = 0.0f;      ///< D
+    float specular = 0.0f;     ///< S
+    /// What f·I_L multiplies: weight·color + k_s·S per channel; weight = k_d·D
+    /// and color = C for every model but gooch (weight 1, its cool-to-warm wash).
     float weight = 0.0f;
+    /// The colour that `weight` multiplies (see `weight`).
     glm::vec3 color{0.0f};
-    // The model's named intermediate values: A, B, s, t (oren-nayar); D_GGX,
-    // Vis, F (cook-torrance); band (toon); t, cool.r…, warm.b (gooch).
+    /// The model's named intermediate values: A, B, s, t (oren-nayar); D_GGX,
+    /// Vis, F (cook-torrance); band (toon); t, cool.r…, warm.b (gooch).
     std::vector<std::pair<std::string, float>> intermediates;
-    glm::vec3 contribution{0.0f};  // this light's part of I
+    glm::vec3 contribution{0.0f};  ///< this light's part of I
 };
 
+/// The working of shade() at one point: every light's terms and the sum.
 struct ShadeTerms {
-    std::vector<LightTerms> lights;  // in the order given
-    glm::vec3 total{0.0f};           // I, exactly what shade() returns
+    std::vector<LightTerms> lights;  ///< in the order given
+    glm::vec3 total{0.0f};           ///< I, exactly what shade() returns
 };
 
-// shade() with its working: each light's terms and the model's intermediate
-// values. `total` is shade()'s result, bit for bit (the same evaluation).
+/// shade() with its working: each light's terms and the model's intermediate
+/// values. `total` is shade()'s result, bit for bit (the same evaluation).
+/// Throws as shade() does.
 ShadeTerms shade_terms(Reflection reflection, const Material& material,
                        std::span<const Light> lights, const glm::vec3& position,
                        const glm::vec3& normal, const glm::vec3& eye);
 
-// The pixel value of docs/spec.md §4 for one channel: round(255 · clamp(I, 0, 1)^(1/gamma)).
+/// The pixel value of docs/spec.md §4 for one channel: round(255 · clamp(I, 0, 1)^(1/gamma)).
+/// `gamma` > 0.
 unsigned char to_pixel(float intensity, float gamma);
 
 }  // namespace litkit

@@ -1,8 +1,9 @@
-// litkit's public API in one include: scenes and their files, the lighting
-// models and the per-point evaluator, meshes and shapes, the CPU renderer,
-// images, the teaching tools (compare, explain, turntable) and the GLSL and
-// C++ exporters. The OpenGL backend, in the separate library litkit::gl, has
-// its own header: litkit/gl_renderer.hpp.
+/// \file
+/// litkit's public API in one include: scenes and their files, the lighting
+/// models and the per-point evaluator, meshes and shapes, the CPU renderer,
+/// images, the teaching tools (compare, explain, turntable) and the GLSL and
+/// C++ exporters. The OpenGL backend, in the separate library litkit::gl, has
+/// its own header: litkit/gl_renderer.hpp.
 #pragma once
 
 #include "litkit/compare.hpp"

@@ -1,4 +1,5 @@
-// The CPU renderer: draws a scene exactly as docs/spec.md §1–§4 define it.
+/// \file
+/// The CPU renderer: draws a scene exactly as docs/spec.md §1–§4 define it.
 #pragma once
 
 #include <array>
@@ -20,28 +21,33 @@ struct RenderOptions {
     // Used where the scene leaves [lighting] out (R10); the caller decides,
     // per R11, whether that is allowed.
     Reflection fallback_reflection = default_reflection;
+    /// The shading model used where the scene leaves it out (as fallback_reflection).
     Shading fallback_shading = default_shading;
-    // Per-pixel kernels: the fastest this CPU runs (AVX2+FMA where present),
-    // or the portable ones (for comparing the two).
-    enum class Kernels { Best, Portable };
+    /// Per-pixel kernels: the fastest this CPU runs (AVX2+FMA where present),
+    /// or the portable ones (for comparing the two).
+    enum class Kernels {
+        Best,     ///< AVX2+FMA where the CPU has them, else the portable ones.
+        Portable  ///< The portable kernels, on any CPU.
+    };
+    /// Which per-pixel kernels to run.
     Kernels kernels = Kernels::Best;
 };
 
-// What the renderer computed at one pixel (litkit explain): the triangle it
-// shows, the perspective-correct weights of its corners, the values the
-// fragment stage interpolated from them, the colour before clamping and the
-// pixel written.
+/// What the renderer computed at one pixel (litkit explain): the triangle it
+/// shows, the perspective-correct weights of its corners, the values the
+/// fragment stage interpolated from them, the colour before clamping and the
+/// pixel written.
 struct PixelProbe {
-    bool hit = false;              // false: the background
-    std::size_t object = 0;        // index into Scene::objects
-    std::size_t triangle = 0;      // within the object's mesh
-    std::array<std::uint32_t, 3> vertices{};  // the mesh vertex at each corner
-    bool clipped = false;          // a piece of a triangle crossing the near plane
-    std::array<float, 3> weights{};  // q0, q1, q2: perspective-correct, summing to 1
-    glm::vec3 position{0.0f};      // Phong shading: p interpolated from the corners
-    glm::vec3 normal{0.0f};        // Phong shading: N interpolated, before renormalising
-    glm::vec3 intensity{0.0f};     // I before clamping and gamma, as shaded
-    Rgb8 rgb{};                    // the pixel
+    bool hit = false;              ///< false: the background
+    std::size_t object = 0;        ///< index into Scene::objects
+    std::size_t triangle = 0;      ///< within the object's mesh
+    std::array<std::uint32_t, 3> vertices{};  ///< the mesh vertex at each corner
+    bool clipped = false;          ///< a piece of a triangle crossing the near plane
+    std::array<float, 3> weights{};  ///< q0, q1, q2: perspective-correct, summing to 1
+    glm::vec3 position{0.0f};      ///< Phong shading: p interpolated from the corners
+    glm::vec3 normal{0.0f};        ///< Phong shading: N interpolated, before renormalising
+    glm::vec3 intensity{0.0f};     ///< I before clamping and gamma, as shaded
+    Rgb8 rgb{};                    ///< the pixel
 };
 
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)
@@ -62,32 +68,37 @@ public:
     // Checks the preconditions, then builds every object's mesh; throws
     // IoError for an unreadable mesh file.
     explicit Renderer(const Scene& scene, RenderOptions options = {});
+    /// Stops the worker threads.
     ~Renderer();
+    /// Not copyable: it owns a thread pool and the prepared meshes.
     Renderer(const Renderer&) = delete;
+    /// Not copyable either.
     Renderer& operator=(const Renderer&) = delete;
 
-    // Draws one frame at the scene's output size.
+    /// Draws one frame at the scene's output size.
     Image render();
-    // Draws into `image`, reusing its storage (resized if needed).
+    /// Draws into `image`, reusing its storage (resized if needed).
     void render_into(Image& image);
 
-    // The scene to draw from now on. Meshes and normals are kept when every
-    // object keeps its shape, parameters and place (a new observer, image
-    // size, models, materials, lights or gamma cost only the rendering);
-    // otherwise they are built again. A mesh file is not read again unless
-    // its object changed.
+    /// The scene to draw from now on. Meshes and normals are kept when every
+    /// object keeps its shape, parameters and place (a new observer, image
+    /// size, models, materials, lights or gamma cost only the rendering);
+    /// otherwise they are built again. A mesh file is not read again unless
+    /// its object changed.
     void update(const Scene& scene);
-    // How often the meshes were built (once at construction; again by an
-    // update that moved, reshaped, added or removed an object).
+    /// How often the meshes were built (once at construction; again by an
+    /// update that moved, reshaped, added or removed an object).
     std::size_t mesh_builds() const;
 
-    // Draws one frame and reports how pixel (x, y) got its value. Throws
-    // ArgumentError outside the image.
+    /// Draws one frame and reports how pixel (x, y) got its value. Throws
+    /// ArgumentError outside the image.
     PixelProbe probe(int x, int y);
 
+    /// The triangles of every object together, as prepared.
     std::size_t triangle_count() const;
+    /// The threads that draw a frame (RenderOptions::threads, 0 resolved).
     int thread_count() const;
-    // Pixels the last frame covered, each shaded once (hidden ones are not).
+    /// Pixels the last frame covered, each shaded once (hidden ones are not).
     std::size_t shaded_pixel_count() const;
 
 private:

@@ -1,4 +1,8 @@
-// A scene as docs/spec.md §5 describes it, and its loading from TOML files.
+/// \file
+/// A scene as docs/spec.md §5 describes it, and its loading from TOML files.
+/// Units: lengths in the scene's world units, angles in degrees, material and
+/// light colours 0–1 per channel (the scene file's 0–255 / 255), the
+/// background 0–255.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -22,10 +26,13 @@
 
 namespace litkit {
 
-// The axis-aligned box centred at the origin that bounds the scene (docs/spec.md §1).
+/// The axis-aligned box centred at the origin that bounds the scene (docs/spec.md §1).
 struct Room {
+    /// Extent along x (> 0).
     float width = 10.0f;
+    /// Extent along y (> 0).
     float height = 10.0f;
+    /// Extent along z (> 0).
     float depth = 10.0f;
 };
 
@@ -35,16 +42,22 @@ struct Room {
 inline constexpr float smallest_fov_degrees = 0.01f;
 
 struct Observer {
+    /// The eye, in world coordinates; inside the room, not inside an object.
     glm::vec3 position{0.0f, 0.0f, 5.0f};
+    /// The point at the centre of the picture; not at `position`.
     glm::vec3 look_at{0.0f};
+    /// Which way is up in the picture; not parallel to the view direction.
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fov_degrees = 45.0f;  // vertical, in [smallest_fov_degrees, 180)
     float near = 0.05f;
+    /// The far clipping distance (> near).
     float far = 1000.0f;
 };
 
 struct OutputSettings {
+    /// Width in pixels, 1–16384.
     int width = 800;
+    /// Height in pixels, 1–16384.
     int height = 600;
     // Linear 0–1 per channel like every colour of the API (lighting.hpp);
     // each pixel no object covers is to_rgb8(background), without gamma.
@@ -56,26 +69,41 @@ struct OutputSettings {
     float gamma = 1.0f;
 };
 
+/// A cube centred at its origin (make_cube).
 struct CubeShape {
+    /// Edge length (> 0).
     float size = 1.0f;
 };
+/// A UV sphere centred at its origin, poles on ±y (make_sphere).
 struct SphereShape {
+    /// Radius (> 0).
     float radius = 1.0f;
+    /// Divisions around y, 3–4096.
     int segments = 64;
+    /// Latitude bands from pole to pole, 2–2048.
     int rings = 32;
 };
+/// A torus in the xz-plane around the y axis (make_torus).
 struct TorusShape {
+    /// Distance from the centre to the middle of the tube (> 0).
     float major_radius = 1.0f;
+    /// Radius of the tube (> 0, below major_radius).
     float minor_radius = 0.25f;
+    /// Divisions around y, 3–4096.
     int segments = 64;
+    /// Divisions around the tube, 3–4096.
     int sides = 32;
 };
+/// The Utah teapot, upright on +y (make_teapot).
 struct TeapotShape {
+    /// Height (> 0).
     float size = 1.0f;
+    /// Steps along each edge of a Bézier patch, 1–64.
     int subdivisions = 10;
 };
+/// A Wavefront OBJ file (load_obj).
 struct MeshFileShape {
-    std::filesystem::path file;  // already resolved against the scene file's folder
+    std::filesystem::path file;  ///< already resolved against the scene file's folder
 };
 // A mesh given in memory, for scenes built in code: positions and triangles
 // (counter-clockwise seen from outside), in the object's local coordinates
@@ -99,73 +127,97 @@ using Shape =
 // "mesh"; "mesh data" for a MeshDataShape (which no scene file holds).
 std::string_view shape_type_name(const Shape& shape);
 
+/// A light of the scene with its name.
 struct SceneLight {
-    std::string name;  // may be empty
+    std::string name;  ///< may be empty
+    /// The light itself.
     Light light;
 };
 
+/// An object of the scene: a shape placed in the world, with its material
+/// and the models that override the scene's.
 struct SceneObject {
-    std::string name;  // may be empty
+    std::string name;  ///< may be empty
+    /// What the object is made of before it is placed.
     Shape shape;
+    /// Where its local origin goes, in world coordinates.
     glm::vec3 position{0.0f};
-    glm::vec3 rotation_degrees{0.0f};  // applied x, then y, then z
+    glm::vec3 rotation_degrees{0.0f};  ///< applied x, then y, then z
+    /// Uniform scale (> 0).
     float scale = 1.0f;
+    /// Its surface.
     Material material;
-    std::optional<Reflection> reflection;  // overrides Scene::reflection
-    std::optional<Shading> shading;        // overrides Scene::shading
-    // docs/spec.md §9.2; each overrides its Scene:: namesake.
+    std::optional<Reflection> reflection;  ///< overrides Scene::reflection
+    std::optional<Shading> shading;        ///< overrides Scene::shading
+    /// docs/spec.md §9.2; each overrides its Scene:: namesake.
     std::optional<Normals> normals;
+    /// The crease angle in degrees, (0, 180]; overrides Scene::crease_angle_degrees.
     std::optional<float> crease_angle_degrees;
 };
 
+/// A whole scene, as loaded (load_scene, parse_scene) or built in code. A
+/// renderer draws it only after validate_scene finds no error.
 struct Scene {
+    /// The box that bounds everything.
     Room room;
+    /// The camera.
     Observer observer;
+    /// The picture's size, background and gamma.
     OutputSettings output;
-    // From [lighting]; missing means "not given" (R11: the caller decides
-    // whether the defaults apply).
+    /// From [lighting]; missing means "not given" (R11: the caller decides
+    /// whether the defaults apply).
     std::optional<Reflection> reflection;
+    /// From [lighting], as `reflection`.
     std::optional<Shading> shading;
-    // docs/spec.md §9.2, for every object; not given means mean and no crease.
+    /// docs/spec.md §9.2, for every object; not given means mean and no crease.
     std::optional<Normals> normals;
+    /// The crease angle in degrees, (0, 180], for every object; not given: no crease.
     std::optional<float> crease_angle_degrees;
+    /// The lights, in file order.
     std::vector<SceneLight> lights;
+    /// The objects, in file order.
     std::vector<SceneObject> objects;
 
-    // Where each value came from, keyed by its path in the scene
-    // ("observer.position", "lights[0].position", "objects[2]"), so that
-    // later checks can point at the offending value.
+    /// Where each value came from, keyed by its path in the scene
+    /// ("observer.position", "lights[0].position", "objects[2]"), so that
+    /// later checks can point at the offending value.
     std::map<std::string, FileLoc, std::less<>> locations;
+    /// The place of the value at `path` (as in `locations`); an empty FileLoc
+    /// when the value was not read from a file.
     FileLoc location_of(std::string_view path) const;
 
-    // Problems that do not stop rendering but are surely unintended (no
-    // lights, an object outside the view), found while loading.
+    /// Problems that do not stop rendering but are surely unintended (no
+    /// lights, an object outside the view), found while loading.
     std::vector<Diagnostic> warnings;
 };
 
-// The defaults of R10: Phong reflection, Phong shading.
+/// The default reflection model of R10: Phong.
 inline constexpr Reflection default_reflection = Reflection::Phong;
+/// The default shading model of R10: Phong.
 inline constexpr Shading default_shading = Shading::Phong;
 
-// Reads and merges scene files (docs/spec.md §5): `lights` and `objects` arrays are
-// concatenated in the order given; every other table may appear in one file
-// only. Throws IoError for a file that cannot be read (missing, not UTF-8,
-// not TOML) and SceneError listing every problem found in the input.
+/// Reads and merges scene files (docs/spec.md §5): `lights` and `objects` arrays are
+/// concatenated in the order given; every other table may appear in one file
+/// only. Throws IoError for a file that cannot be read (missing, not UTF-8,
+/// not TOML) and SceneError listing every problem found in the input.
 Scene load_scene(std::span<const std::filesystem::path> files);
 
-// The scene-wide triangle budget (docs/reliability.md): the objects' shapes
-// may need at most this many triangles together, counted from their
-// parameters before any mesh is built (about 3.5 GB to render on the CPU, so
-// that the 24 GiB machines litkit is tested on never run out of memory).
+/// The scene-wide triangle budget (docs/reliability.md): the objects' shapes
+/// may need at most this many triangles together, counted from their
+/// parameters before any mesh is built (about 3.5 GB to render on the CPU, so
+/// that the 24 GiB machines litkit is tested on never run out of memory).
 inline constexpr std::uint64_t default_triangle_budget = 64'000'000;
 
+/// Limits that load_scene applies.
 struct LoadOptions {
+    /// The most triangles the objects may make together (SceneError beyond).
     std::uint64_t max_triangles = default_triangle_budget;
 };
+/// load_scene with limits other than the defaults.
 Scene load_scene(std::span<const std::filesystem::path> files, const LoadOptions& options);
 
-// Parses one scene from text. `source_name` is used in messages and its
-// folder resolves relative mesh paths.
+/// Parses one scene from text. `source_name` is used in messages and its
+/// folder resolves relative mesh paths. Throws as load_scene does.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);
 
 // The scene as one TOML file that `load_scene` reads back as the same scene
@@ -177,9 +229,11 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& sourc
 // and use a MeshFileShape.
 std::string scene_to_toml(const Scene& scene, const std::filesystem::path& written_as = {});
 
-// The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
-// the centre of the room, Phong shading, Phong reflection.
+/// The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
+/// the centre of the room, Phong shading, Phong reflection. As TOML text,
+/// with comments (what `litkit init` writes).
 std::string_view default_scene_toml();
+/// The built-in default scene, loaded.
 Scene default_scene();
 
 // True when the two objects have the same mesh in the same place: the same
@@ -188,7 +242,7 @@ Scene default_scene();
 // share one Mesh or hold equal positions and triangles.
 bool same_geometry(const SceneObject& a, const SceneObject& b);
 
-// world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
+/// world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
 glm::mat4 object_to_world(const SceneObject& object);
 
 // The object's mesh in local coordinates (builds the shape, reads the file
@@ -196,33 +250,38 @@ glm::mat4 object_to_world(const SceneObject& object);
 // that check_mesh_data refuses.
 Mesh object_mesh(const SceneObject& object);
 
-// An object's triangles in world space, as every backend draws them:
-// positions placed by object_to_world, and DD9 vertex normals (found in local
-// coordinates, where docs/spec.md §2 welds positions, then rotated: the scale is
-// uniform and positive, so that is the same direction).
+/// An object's triangles in world space, as every backend draws them:
+/// positions placed by object_to_world, and DD9 vertex normals (found in local
+/// coordinates, where docs/spec.md §2 welds positions, then rotated: the scale is
+/// uniform and positive, so that is the same direction).
 struct WorldMesh {
+    /// The vertices, in world coordinates.
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;  // unit, or zero where no triangle counts
+    std::vector<glm::vec3> normals;  ///< unit, or zero where no triangle counts
+    /// Three indices into `positions` per triangle, counter-clockwise seen from outside.
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
+/// The object in world space with DD9 (mean) normals.
 WorldMesh world_mesh(const SceneObject& object);
 
-// How an object's vertex normals are found (docs/spec.md §9.2).
+/// How an object's vertex normals are found (docs/spec.md §9.2).
 struct NormalOptions {
+    /// The weighting, or the file's own normals.
     Normals normals = Normals::Mean;
-    std::optional<float> crease_angle_degrees;  // absent or 180: nothing splits
+    std::optional<float> crease_angle_degrees;  ///< absent or 180: nothing splits
+    /// Equal when both fields are.
     bool operator==(const NormalOptions&) const = default;
 };
 
-// The object's own `normals` and `crease_angle`, else the scene's; "file"
-// from the scene applies to mesh objects only, the others use mean.
+/// The object's own `normals` and `crease_angle`, else the scene's; "file"
+/// from the scene applies to mesh objects only, the others use mean.
 NormalOptions normal_options(const Scene& scene, const SceneObject& object);
 
-// world_mesh with the normals of docs/spec.md §9.2. Where normals differ per
-// corner (a crease, or a mesh file's normals), a position appears once per
-// distinct normal at it, so every backend gets per-corner normals as plain
-// vertices. Throws SceneError, located at the face's line in the mesh file,
-// for "file" normals on a mesh that lacks a normal at some face corner.
+/// world_mesh with the normals of docs/spec.md §9.2. Where normals differ per
+/// corner (a crease, or a mesh file's normals), a position appears once per
+/// distinct normal at it, so every backend gets per-corner normals as plain
+/// vertices. Throws SceneError, located at the face's line in the mesh file,
+/// for "file" normals on a mesh that lacks a normal at some face corner.
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options);
 
 }  // namespace litkit
