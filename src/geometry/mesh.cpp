@@ -370,14 +370,6 @@ struct CornerWeights {
     std::vector<glm::vec3> unit_normals;  // DD8 per triangle, when asked for
 };
 
-// atan2(sine_part, cosine_part) in float, the pair first divided by its
-// larger magnitude so that no size of triangle overflows or underflows a
-// float (the angle is the same).
-float angle_between(double sine_part, double cosine_part) {
-    const double larger = std::max(std::abs(sine_part), std::abs(cosine_part));
-    return std::atan2(float(sine_part / larger), float(cosine_part / larger));
-}
-
 // The weighted normals of triangle (a, b, c) at its corners; false for a
 // triangle that takes no part (zero area, which includes a zero-length
 // edge, or non-finite).
@@ -404,17 +396,16 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
         case Normals::Angle: {
             // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
             // π minus those (a triangle's angles sum to π), one call fewer.
-            // In float (the weights are stored as floats): atan2f costs a
-            // third of the double atan2, which was most of this weighting's
-            // time (docs/performance.md).
-            const float angle0 = angle_between(
-                length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
-            const float angle1 = angle_between(
-                length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
-            const double angle2 =
-                std::max(0.0, std::numbers::pi - double(angle0) - double(angle1));
-            out[0] = glm::vec3(double(angle0) * unit);
-            out[1] = glm::vec3(double(angle1) * unit);
+            // In double: float atan2f differs between C libraries in the last
+            // bit (glibc, and the WebAssembly build's musl), double rounded
+            // to float does not, so every build finds the same normals.
+            const double angle0 =
+                std::atan2(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
+            const double angle1 =
+                std::atan2(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
+            const double angle2 = std::max(0.0, std::numbers::pi - angle0 - angle1);
+            out[0] = glm::vec3(angle0 * unit);
+            out[1] = glm::vec3(angle1 * unit);
             out[2] = glm::vec3(angle2 * unit);
             break;
         }
