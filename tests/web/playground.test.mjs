@@ -224,7 +224,7 @@ try {
                     "--width", String(tw), "--height", String(th)];
       expectSame(tile, litkitRender(litkit, text, args), `tile ${models.reflection[r]}/${models.shading[c]}`);
     }
-    if (screenshot) await page.screenshot({ path: screenshot });
+    if (screenshot) await page.screenshot({ path: screenshot, fullPage: true });
     const back = await answers();
     await page.click('input[name="view"][value="single"]');
     await settle(back);

@@ -57,10 +57,10 @@
   }
 
   function paint(canvas, answer, left = 0, top = 0) {
+    // A view of the module's memory, copied once, by putImageData.
     const bytes = new Uint8ClampedArray(module.HEAPU8.buffer, module.ccall("litkit_pixels", "number", [], []),
                                         answer.width * answer.height * 4);
-    canvas.getContext("2d").putImageData(new ImageData(new Uint8ClampedArray(bytes), answer.width, answer.height),
-                                         left, top);
+    canvas.getContext("2d").putImageData(new ImageData(bytes, answer.width, answer.height), left, top);
   }
 
   // The grid view: every reflection × shading pair, as `litkit compare`
@@ -136,8 +136,9 @@
       status.textContent = "The scene has errors: the picture is the last one that rendered.";
       return answer;
     }
-    picture.width = answer.width;
-    picture.height = answer.height;
+    // (Setting a canvas's size clears and reallocates it: only on a change.)
+    if (picture.width !== answer.width) picture.width = answer.width;
+    if (picture.height !== answer.height) picture.height = answer.height;
     paint(picture, answer);
     page.renderMs = performance.now() - start;
     page.lastGood = answer;
@@ -148,6 +149,12 @@
       (answer.lighting_given ? "" : "; [lighting] leaves a model out: phong used, as --yes does");
     showValues(answer);
     if (view() === "grid") drawGrid(answer);
+    // The pixel last clicked, explained again for the scene as it is now
+    // (watch its numbers follow a slider).
+    if (page.explained && page.explained.ok && view() === "single" &&
+        page.explained.x < answer.width && page.explained.y < answer.height) {
+      explain(page.explained.x, page.explained.y);
+    }
     return answer;
   }
   page.render = render;

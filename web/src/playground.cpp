@@ -211,10 +211,13 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE const char* litkit_render(const char* text, const char* reflection,
                                                const char* shading) {
     try {
+        const auto start = std::chrono::steady_clock::now();
         litkit::Scene scene = litkit::parse_scene(text, scene_path);
+        const double parse_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const bool lighting_given = scene.reflection && scene.shading;
         choose_models(scene, reflection, shading);
-        std::string answer = "{\"ok\":true," + draw(scene) +
+        std::string answer = "{\"ok\":true," + draw(scene) + ",\"parse_ms\":" + json_number(parse_ms) +
                              ",\"warnings\":" + json_diagnostics(scene.warnings) +
                              ",\"lighting_given\":" + (lighting_given ? "true" : "false") +
                              ",\"values\":" + json_values(scene) +
