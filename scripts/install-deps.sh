@@ -8,6 +8,9 @@
 #                                    which only scripts/fuzz.sh needs
 #   scripts/install-deps.sh --bench  the same, plus hyperfine and GNU time,
 #                                    which only bench/compare.sh needs
+#   scripts/install-deps.sh --web    the same, plus emscripten, Chromium and
+#                                    node/npm, which only scripts/build-web.sh
+#                                    and scripts/test-web.sh need
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -40,12 +43,20 @@ fuzz_packages=(clang libclang-rt-14-dev)
 # bench/compare.sh times whole runs with hyperfine and reads peak memory with
 # GNU time.
 bench_packages=(hyperfine time)
+# The playground (docs/web.md): the library compiled to WebAssembly with
+# Debian's emscripten (it brings clang, lld, binaryen, nodejs and node-acorn),
+# and its test in Debian's headless Chromium, driven from node. npm comes
+# with Debian's nodejs only as a package of its own; a node installed some
+# other way usually has its npm, so it is asked for only when missing.
+web_packages=(emscripten chromium)
+command -v npm >/dev/null || web_packages+=(npm)
 
 case "${1:-}" in
   "") ;;
   --fuzz) packages+=("${fuzz_packages[@]}") ;;
   --bench) packages+=("${bench_packages[@]}") ;;
-  *) echo "usage: $0 [--fuzz | --bench]" >&2; exit 2 ;;
+  --web) packages+=("${web_packages[@]}") ;;
+  *) echo "usage: $0 [--fuzz | --bench | --web]" >&2; exit 2 ;;
 esac
 
 missing=()

@@ -75,8 +75,11 @@ Mesh load_obj(const std::filesystem::path& path) {
     }
     // Bounded (docs/reliability.md), and every number checked first:
     // tinyobjloader reads "nan", "abc" or "0,5" as 0 without a word.
-    std::istringstream file(read_file_limited(path));
-    detail::check_obj_numbers(file.view(), name);
+    // (The text apart from the stream, not file.view(): the C++ library of
+    // the WebAssembly build, docs/web.md, has no istringstream::view.)
+    const std::string text = read_file_limited(path);
+    detail::check_obj_numbers(text, name);
+    std::istringstream file(text);
 
     // Without tinyobjloader's triangulation: docs/spec.md §2 fixes the fan
     // (v0, vi, vi+1), made below. No material reader: materials play no part,

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Tests the playground (docs/web.md) in a real browser: builds the site
+# (scripts/build-web.sh) and the native litkit, installs the test's one npm
+# package (puppeteer-core, pinned in tests/web/package-lock.json; it drives
+# Debian's /usr/bin/chromium and downloads no browser), then runs
+# tests/web/sliders.test.mjs (the sliders' text editing, in node) and
+# tests/web/playground.test.mjs, which compares every picture of the page
+# with `litkit render` of the same text. Ends with "web: N passed, M failed".
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/build-web.sh
+if command -v ccache >/dev/null; then export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}; fi
+if [ ! -f build/build.ninja ]; then
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build build -j"${JOBS:-2}" --target litkit_cli
+(cd tests/web && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
+# Both tests run; the last line adds them up.
+status=0
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+node tests/web/sliders.test.mjs build-web/site | tee -a "$log" || status=1
+node tests/web/playground.test.mjs build-web/site build/litkit . "${SCREENSHOT:-build-web/playground.png}" \
+  | tee -a "$log" || status=1
+awk '/^[0-9]+ passed, [0-9]+ failed$/ { p += $1; f += $3; n += 1 }
+     END { if (n < 2) f += 1; print "web: " p " passed, " f " failed" }' "$log"
+exit $status
