@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench/compare.sh [--quick] [--rounds R] [--frames K]
+# bench/compare.sh [--quick] [--targets] [--rounds R] [--frames K]
 #
 # litkit against a plain OpenGL program (bench/gl_peer: litkit_gl_peer, an
 # OpenGL 3.3 core program on a headless EGL context, Mesa's llvmpipe where
@@ -29,7 +29,10 @@
 #   memory         peak resident set size of the 1080p runs (GNU time -v)
 #
 # Default: 5 rounds of 20 frames. --quick: one round of 3 frames, a smoke
-# run for CI (no timing is asserted). Installs what it needs through
+# run for CI (no timing is asserted). --targets: only the rows issue 16 sets
+# targets for (the default scene to PNG at 800x600, and at 1920x1080 the
+# cube, the full-screen fill and the 261k sphere), with their picture
+# checks; 5 whole-process runs per round. Installs what it needs through
 # `scripts/install-deps.sh --bench`. Builds what it runs in build-bench/
 # (LITKIT_BENCH_BUILD overrides), with at most 2 parallel jobs. Raw numbers
 # go to build-bench/compare/. LITKIT_BENCH_HYPERFINE=0 uses the plain loop
@@ -46,13 +49,15 @@ rounds=5
 frames=20
 whole_runs=10   # hyperfine runs per command per round
 whole_warmup=2
+targets=no      # --targets: only the rows issue 16 sets targets for
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) rounds=1; frames=3; whole_runs=2; whole_warmup=1 ;;
+    --targets) targets=yes ;;
     --rounds) rounds=$2; shift ;;
     --frames) frames=$2; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) echo "usage: $0 [--quick] [--rounds R] [--frames K]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--quick] [--targets] [--rounds R] [--frames K]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -61,6 +66,7 @@ done
 # One command from a clean checkout: install what the build and the timing
 # need (apt; a no-op when everything is there).
 "$root/scripts/install-deps.sh" --bench
+[ $targets = yes ] && [ "$whole_runs" -gt 5 ] && whole_runs=5
 if ! grep -qs '^LITKIT_BUILD_BENCH:BOOL=ON' "$build/CMakeCache.txt"; then
   generator=()
   [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null && generator=(-G Ninja)
@@ -152,7 +158,13 @@ check() {  # name, scene arguments (as for litkit render / litkit_gl_peer)
 }
 check "default 800x600"
 check "default 1920x1080" --width 1920 --height 1080
-for name in fill sphere-65k sphere-261k teapot-64; do check "$name" "$scenes/$name.toml"; done
+if [ $targets = yes ]; then
+  bench_scenes=(fill sphere-261k)
+else
+  bench_scenes=(fill sphere-65k sphere-261k teapot-64)
+fi
+for name in "${bench_scenes[@]}"; do check "$name" "$scenes/$name.toml"; done
+[ $targets = yes ] ||
 for reflection in lambert half-lambert phong blinn-phong; do
   for shading in flat gouraud phong; do
     check "65k-$reflection-$shading" "$scenes/sphere-65k.toml" --reflection "$reflection" --shading "$shading"
@@ -244,9 +256,10 @@ rows=()
 add_row() { rows+=("$1|$2|${3:-}|${4:-}"); }
 add_row "cube (default)" ""
 add_row "full-screen fill" "$scenes/fill.toml"
-add_row "sphere 65k" "$scenes/sphere-65k.toml"
+[ $targets = yes ] || add_row "sphere 65k" "$scenes/sphere-65k.toml"
 add_row "sphere 261k" "$scenes/sphere-261k.toml"
-add_row "teapot 64" "$scenes/teapot-64.toml"
+[ $targets = yes ] || add_row "teapot 64" "$scenes/teapot-64.toml"
+[ $targets = yes ] ||
 for reflection in lambert half-lambert phong blinn-phong; do
   for shading in flat gouraud phong; do
     add_row "65k $reflection/$shading" "$scenes/sphere-65k.toml" "$reflection" "$shading"
@@ -285,7 +298,7 @@ for ((r = 1; r <= rounds; r++)); do
   echo "round $r/$rounds (machine ${idle}% idle before it) ..." >&2
   [ "$idle" -ge 90 ] || busy_rounds+=" $r (${idle}% idle)"
   whole_round "$r" "default 800x600 to PNG" 800 600
-  whole_round "$r" "default 1920x1080 to PNG" 1920 1080
+  [ $targets = yes ] || whole_round "$r" "default 1920x1080 to PNG" 1920 1080
   for row in "${rows[@]}"; do steady_round "$r" "$row"; done
 done
 
@@ -310,7 +323,9 @@ table() {  # side a (the denominator), side b, name a, name b
   line "scene (1920x1080 unless said)" "$3 ms" "$4 ms" "ratio" "per round" "$3 MiB" "$4 MiB" "$3 setup" "$4 setup"
   line "----------------------------" "------" "------" "-----" "---------" "-------" "-------" "--------" "--------"
   local label a b
-  for label in "default 800x600 to PNG" "default 1920x1080 to PNG"; do
+  local whole_labels=("default 800x600 to PNG")
+  [ $targets = yes ] || whole_labels+=("default 1920x1080 to PNG")
+  for label in "${whole_labels[@]}"; do
     a=$(med_of "$label" "$a_side" 4); b=$(med_of "$label" "$b_side" 4)
     line "$label" "$(printf %.1f "$a")" "$(printf %.1f "$b")" "$(ratio "$a" "$b")" "$(spread "$label" "$a_side" "$b_side")" \
          "$(mib "$(med_of "$label" "$a_side-rss" 5)")" "$(mib "$(med_of "$label" "$b_side-rss" 5)")" "-" "-"
