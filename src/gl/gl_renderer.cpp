@@ -204,7 +204,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
             const Shading shading = object.shading.value_or(scene_shading);
             auto [found, added] = gl.programs.try_emplace({reflection, shading}, 0);
             if (added) {
-                const glsl::Shaders shaders = 
+                const glsl::Shaders shaders =
                     glsl::generate_for_scene(reflection, shading, lights, scene.output.gamma);
                 try {
                     found->second = core::link_program(shaders.vertex, shaders.fragment);
