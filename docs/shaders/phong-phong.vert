@@ -17,7 +17,8 @@
 //     mat4 u_view_projection        world -> clip
 //     vec3 u_eye                    the observer's position
 //     Material u_material           colour C (colour / 255), k_a, k_d, k_s, shininess
-//     int u_light_count             the lights used, at most MAX_LIGHTS
+//     int u_light_count             the lights used, at most MAX_LIGHTS (a program
+//                                   specialised to a scene's lights ignores it)
 //     Light u_lights[MAX_LIGHTS]    the fields of litkit::equations::PreparedLight:
 //                                   kind (LIGHT_*), radiance I_L, position, direction
 //                                   (unit; directional: travel, spot: axis),

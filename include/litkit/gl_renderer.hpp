@@ -50,7 +50,10 @@ public:
 
     /// The scene to draw from now on: a new camera, size, lights' values,
     /// materials or gamma keep the programs and the uploaded meshes; other
-    /// changes build them again.
+    /// changes build them again. The programs are written for the lights'
+    /// number and kinds and for a gamma of 1 or not (glsl::generate_for_scene),
+    /// so a light of another kind, a light more or less, or gamma leaving or
+    /// reaching 1 builds them again.
     void update(const Scene& scene);
 
     /// Draws one frame at the scene's output size and reads it back.

@@ -178,14 +178,21 @@ std::string lights_source(const Scene& scene) {
     return out;
 }
 
-std::string shaders_source(const ObjectModels& models, int capacity) {
+// The C++ program draws with the programs of the OpenGL backend, specialised
+// to the scene's lights (glsl::generate_for_scene), so that both draw the
+// same picture byte for byte and as fast; `--format glsl` writes the general
+// programs, for any lights up to the scene's count.
+std::string shaders_source(const ObjectModels& models, const Scene& scene) {
+    std::vector<Light> lights;
+    for (const SceneLight& light : scene.lights) lights.push_back(light.light);
     std::string out =
         "// The source of one program: a vertex and a fragment shader.\n"
         "struct ProgramSource {\n    const char* vertex;\n    const char* fragment;\n};\n\n";
     std::string table = "const std::vector<ProgramSource> programs = {\n";
     for (std::size_t i = 0; i < models.pairs.size(); ++i) {
         const ModelPair& pair = models.pairs[i];
-        const glsl::Shaders shaders = glsl::generate(pair.first, pair.second, capacity);
+        const glsl::Shaders shaders =
+            glsl::generate_for_scene(pair.first, pair.second, lights, scene.output.gamma);
         const std::string id = pair_identifier(pair);
         out += "// Program " + std::to_string(i) + ": reflection " + std::string(to_string(pair.first)) +
                ", shading " + std::string(to_string(pair.second)) + ".\n";
@@ -356,7 +363,7 @@ std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
     const std::string program = fill_template(
         detail::program_template_text,
         {{"CORE", detail::opengl_core_text},
-         {"SHADERS", shaders_source(models, light_capacity(scene))},
+         {"SHADERS", shaders_source(models, scene)},
          {"WIDTH", std::to_string(scene.output.width)},
          {"HEIGHT", std::to_string(scene.output.height)},
          {"BACKGROUND", "glm::vec3(" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " +

@@ -1,8 +1,13 @@
 #include "litkit/glsl.hpp"
 #include "litkit/error.hpp"
 
+#include <algorithm>
+#include <optional>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "codegen/glsl_expr.hpp"
 #include "litkit/equations.hpp"
@@ -244,7 +249,8 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "//     vec3 u_eye                    the observer's position\n"
            "//     Material u_material           colour C (colour / 255), k_a, k_d, k_s, "
            "shininess\n"
-           "//     int u_light_count             the lights used, at most MAX_LIGHTS\n"
+           "//     int u_light_count             the lights used, at most MAX_LIGHTS (a program\n"
+           "//                                   specialised to a scene's lights ignores it)\n"
            "//     Light u_lights[MAX_LIGHTS]    the fields of litkit::equations::PreparedLight:\n"
            "//                                   kind (LIGHT_*), radiance I_L, position, "
            "direction\n"
@@ -268,7 +274,60 @@ std::string material_parameter_fields() {
     return fields;
 }
 
-std::string lighting_declarations(Reflection reflection, int light_capacity) {
+// A light's kind as the shaders number it (LIGHT_AMBIENT ... LIGHT_SPOT):
+// the index of its alternative in litkit::LightKind.
+static_assert(std::is_same_v<std::variant_alternative_t<0, LightKind>, AmbientLight> &&
+                  std::is_same_v<std::variant_alternative_t<1, LightKind>, DirectionalLight> &&
+                  std::is_same_v<std::variant_alternative_t<2, LightKind>, PointLight> &&
+                  std::is_same_v<std::variant_alternative_t<3, LightKind>, SpotLight>,
+              "LightKind's alternatives are in the order of the LIGHT_* constants");
+
+// shade() for lights whose kinds are known: one block per light, in the
+// scene's order (so the sum is taken in the order equations::shade_point
+// takes it), no loop and no branch on a kind; the values are still read
+// from u_lights[i].
+std::string unrolled_shade(std::span<const Light> lights) {
+    std::string text =
+        "\n"
+        "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
+        "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V,\n"
+        "// unclamped. Specialised to the scene's lights: one block per light, of its\n"
+        "// kind, in the scene's order (the kinds are fixed when the program is\n"
+        "// generated, the values are the uniforms u_lights[i]); the same sum, term for\n"
+        "// term, as equations::shade_point.\n"
+        "vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {\n"
+        "    vec3 total = vec3(0.0);\n";
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::string at = "u_lights[" + std::to_string(i) + "].";
+        const std::size_t kind = lights[i].kind.index();
+        if (kind == 0) {
+            text += "    total = total + ambient_term(" + at + "radiance, u_material);  // light " +
+                    std::to_string(i) + ": ambient\n";
+            continue;
+        }
+        text += "    {  // light " + std::to_string(i) + ": " +
+                (kind == 1 ? "directional" : kind == 2 ? "point" : "spot") + "\n";
+        if (kind == 1) {
+            text += "        Incidence incidence = directional_incidence(" + at + "direction);\n";
+        } else {
+            text += "        Incidence incidence = point_incidence(" + at + "position, " + at +
+                    "attenuation, p);\n";
+            if (kind == 3)
+                text += "        incidence.factor = incidence.factor * spot_factor(incidence.to_light, " +
+                        at + "direction,\n                                           " + at +
+                        "cos_cutoff, " + at + "cos_inner, " + at + "exponent);\n";
+        }
+        text += "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, u_material);\n"
+                "        total = total + direct_term(" + at + "radiance, incidence.factor, reflected, u_material);\n"
+                "    }\n";
+    }
+    return text + "    return total;\n}\n";
+}
+
+// `lights`: the scene's lights, for a program specialised to them; none: the
+// general program, a loop over u_light_count lights of any kind.
+std::string lighting_declarations(Reflection reflection, int light_capacity,
+                                  std::optional<std::span<const Light>> lights) {
     std::string text =
         "\n"
         "// Light kinds: the order of litkit::equations::PreparedLight::Kind.\n"
@@ -333,6 +392,7 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
         text += '\n';
         text += print_function(function, options);
     }
+    if (lights) return text + unrolled_shade(*lights);
     text +=
         "\n"
         "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
@@ -374,29 +434,32 @@ std::string lighting_declarations(Reflection reflection, int light_capacity) {
 }
 
 // litkit::to_pixel on the GPU.
-const char* const to_pixel_function =
+// `gamma_one`: for a program specialised to a picture of gamma 1, which
+// leaves the power out (a uniform branch still costs llvmpipe the power).
+std::string to_pixel_function(bool gamma_one) {
+    return std::string(
     "\n"
     "uniform float u_inv_gamma;\n"
     "\n"
     "// The pixel value litkit defines, round(255 * clamp(I, 0, 1)^(1/gamma)) with halves up,\n"
     "// as litkit::to_pixel computes it (NaN -> 0), divided by 255 so that the conversion\n"
-    "// to RGBA8 is exact.\n"
+    "// to RGBA8 is exact.") + (gamma_one ? " This program is for gamma 1: no power.\n" : "\n") +
     "vec3 to_pixel(vec3 intensity) {\n"
-    "    vec3 c = mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, vec3(0.0)));\n"
-    "    if (u_inv_gamma != 1.0) c = pow(c, vec3(u_inv_gamma));\n"
+    "    vec3 c = mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, vec3(0.0)));\n" +
+    (gamma_one ? "" : "    if (u_inv_gamma != 1.0) c = pow(c, vec3(u_inv_gamma));\n") +
     "    vec3 scaled = 255.0 * c;\n"
     "    vec3 level = floor(scaled);\n"
     "    level += step(0.5, scaled - level);  // halves up (scaled - level is exact)\n"
     "    return level / 255.0;\n"
     "}\n";
+}
 
 }  // namespace
 
-Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
-    if (light_capacity < 1) {
-        throw ArgumentError("glsl::generate: the light capacity must be at least 1, not " +
-                                    std::to_string(light_capacity));
-    }
+namespace {
+
+Shaders generate_program(Reflection reflection, Shading shading, int light_capacity,
+                         std::optional<std::span<const Light>> lights, bool gamma_one) {
     Shaders shaders;
     std::string& vertex = shaders.vertex;
     std::string& fragment = shaders.fragment;
@@ -412,7 +475,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
 
     switch (shading) {
         case Shading::Flat:
-            vertex += lighting_declarations(reflection, light_capacity);
+            vertex += lighting_declarations(reflection, light_capacity, lights);
             vertex +=
                 "\n"
                 "// Flat shading: lit once per triangle, at its centroid, with the face\n"
@@ -431,7 +494,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "flat in vec3 v_color;\n"
                 "\n"
                 "out vec4 frag_color;\n";
-            fragment += to_pixel_function;
+            fragment += to_pixel_function(gamma_one);
             fragment +=
                 "\n"
                 "void main() {\n"
@@ -439,7 +502,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "}\n";
             break;
         case Shading::Gouraud:
-            vertex += lighting_declarations(reflection, light_capacity);
+            vertex += lighting_declarations(reflection, light_capacity, lights);
             vertex +=
                 "\n"
                 "// Gouraud shading: lit at each vertex with its vertex normal; the colour,\n"
@@ -456,7 +519,7 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "in vec3 v_color;\n"
                 "\n"
                 "out vec4 frag_color;\n";
-            fragment += to_pixel_function;
+            fragment += to_pixel_function(gamma_one);
             fragment +=
                 "\n"
                 "void main() {\n"
@@ -483,8 +546,8 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "in vec3 v_normal;\n"
                 "\n"
                 "out vec4 frag_color;\n";
-            fragment += lighting_declarations(reflection, light_capacity);
-            fragment += to_pixel_function;
+            fragment += lighting_declarations(reflection, light_capacity, lights);
+            fragment += to_pixel_function(gamma_one);
             fragment +=
                 "\n"
                 "// Phong shading: lit at the interpolated position with the interpolated\n"
@@ -512,8 +575,8 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
                 "in vec3 v_position;\n"
                 "\n"
                 "out vec4 frag_color;\n";
-            fragment += lighting_declarations(reflection, light_capacity);
-            fragment += to_pixel_function;
+            fragment += lighting_declarations(reflection, light_capacity, lights);
+            fragment += to_pixel_function(gamma_one);
             fragment +=
                 "\n"
                 "// Faceted shading (docs/spec.md §9.2): lit at the interpolated position with\n"
@@ -530,6 +593,28 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
             break;
     }
     return shaders;
+}
+
+}  // namespace
+
+Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
+    if (light_capacity < 1) {
+        throw ArgumentError("glsl::generate: the light capacity must be at least 1, not " +
+                                    std::to_string(light_capacity));
+    }
+    return generate_program(reflection, shading, light_capacity, std::nullopt, false);
+}
+
+Shaders generate(Reflection reflection, Shading shading, std::span<const Light> lights,
+                 float gamma) {
+    return generate_program(reflection, shading, std::max<int>(1, static_cast<int>(lights.size())),
+                            lights, gamma == 1.0f);
+}
+
+Shaders generate_for_scene(Reflection reflection, Shading shading, std::span<const Light> lights,
+                           float gamma) {
+    if (lights.size() <= max_specialised_lights) return generate(reflection, shading, lights, gamma);
+    return generate(reflection, shading, static_cast<int>(lights.size()));
 }
 
 }  // namespace litkit::glsl

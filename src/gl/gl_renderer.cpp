@@ -144,8 +144,14 @@ void GlRenderer::update(const Scene& scene) {
         return std::pair(object.reflection.value_or(s.reflection.value_or(o.fallback_reflection)),
                          object.shading.value_or(s.shading.value_or(o.fallback_shading)));
     };
+    // The programs are specialised to the lights' kinds and to a gamma of
+    // 1 or not (glsl::generate_for_scene): new values keep them, another kind or
+    // number of lights, or gamma leaving or reaching 1, does not.
     bool same = scene.objects.size() == gl.scene.objects.size() &&
-                scene.lights.size() == gl.scene.lights.size();
+                scene.lights.size() == gl.scene.lights.size() &&
+                (scene.output.gamma == 1.0f) == (gl.scene.output.gamma == 1.0f);
+    for (std::size_t i = 0; same && i < scene.lights.size(); ++i)
+        same = scene.lights[i].light.kind.index() == gl.scene.lights[i].light.kind.index();
     for (std::size_t i = 0; same && i < scene.objects.size(); ++i)
         same = same_geometry(scene.objects[i], gl.scene.objects[i]) &&
                normal_options(scene, scene.objects[i]) ==
@@ -189,6 +195,8 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
         for (const equations::PreparedLight& light : detail::prepared_lights(scene))
             gl.lights.push_back(light_data(light));
         const int capacity = std::max<int>(1, static_cast<int>(gl.lights.size()));
+        std::vector<Light> lights;
+        for (const SceneLight& light : scene.lights) lights.push_back(light.light);
 
         const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
         const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
@@ -198,7 +206,8 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
             const Shading shading = object.shading.value_or(scene_shading);
             auto [found, added] = gl.programs.try_emplace({reflection, shading}, 0);
             if (added) {
-                const glsl::Shaders shaders = glsl::generate(reflection, shading, capacity);
+                const glsl::Shaders shaders =
+                    glsl::generate_for_scene(reflection, shading, lights, scene.output.gamma);
                 try {
                     found->second = core::link_program(shaders.vertex, shaders.fragment);
                 } catch (const std::runtime_error& error) {
