@@ -318,3 +318,25 @@ TEST(GlBackend, WeightedAndCreasedNormalsMatchCpu) {
         expect_edges_and_background_agree(c.agreement);
     }
 }
+
+TEST(GlBackend, MatchesCpuOnAScaledScene) {
+    // docs/reliability.md "Geometry at any scale": the OpenGL backend draws a
+    // room of 1e19 or of 1e-25 as the CPU backend does (both bring its
+    // lengths into a float's range by the same power of two).
+    for (const char* scale : {"e19", "e-25"}) {
+        const std::string s = scale;
+        const std::string text =
+            "[room]\nwidth = 10" + s + "\nheight = 10" + s + "\ndepth = 10" + s +
+            "\n[observer]\nposition = [3.5" + s + ", 1" + s + ", 4" + s + "]\nlook_at = [-2" + s +
+            ", -3" + s + ", -2" + s + "]\nnear = 0.05" + s + "\nfar = 1000" + s +
+            "\n[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n[output]\nwidth = 160\n"
+            "height = 120\n[[lights]]\ntype = \"point\"\nposition = [0, 0, 0]\nattenuation = [1, 0, "
+            "0]\n[[objects]]\ntype = \"cube\"\nsize = 2" + s + "\nposition = [-2" + s + ", -3" + s +
+            ", -2" + s + "]\nrotation = [0, 30, 0]\n";
+        const litkit::Scene scene = litkit::parse_scene(text, "scaled.toml");
+        const Comparison c = compare_backends(scene);
+        EXPECT_GT(c.agreement.counted, c.pixels / 20) << scale;  // the cube is drawn
+        EXPECT_GE(c.agreement.fraction(), required_fraction) << scale;
+        expect_edges_and_background_agree(c.agreement);
+    }
+}

@@ -14,6 +14,7 @@
 #include "codegen/glsl_expr.hpp"
 #include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "scene/float_range.hpp"
 #include "litkit/glsl.hpp"
 
 namespace litkit {
@@ -346,9 +347,13 @@ std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
     return files;
 }
 
-std::vector<fs::path> export_cpp(const Scene& scene, const fs::path& directory,
+std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
                                  const std::string& program_name, const std::string& scene_label,
                                  const ExportOptions& options) {
+    // The program draws what the renderers draw: lengths brought into a
+    // float's range by a power of two (scene/float_range.hpp; 1 for
+    // ordinary scenes).
+    const Scene scene = scale_lengths(input, float_safe_length_scale(input));
     if (!is_identifier(program_name))
         throw ArgumentError("program name '" + program_name +
                                     "' is not a C identifier (letters, digits, _)");

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "codegen/gl_scene.hpp"
+#include "scene/float_range.hpp"
 #include "litkit/glsl.hpp"
 #include "litkit/validate.hpp"
 
@@ -134,8 +135,11 @@ void set_frame(GlRenderer::Impl& gl, const Scene& scene) {
 GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
     : GlRenderer(scene, options, CurrentContext{}, true) {}
 
-void GlRenderer::update(const Scene& scene) {
-    check_renderable(scene);  // litkit/validate.hpp: the renderers' preconditions
+void GlRenderer::update(const Scene& input) {
+    check_renderable(input);  // litkit/validate.hpp: the renderers' preconditions
+    // Drawn as the CPU renderer draws it: lengths brought into a float's
+    // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
+    const Scene scene = scale_lengths(input, float_safe_length_scale(input));
     Impl& gl = *impl_;
     // What the programs and the uploaded meshes depend on: the objects'
     // geometry and models, and how many lights the shaders hold.
@@ -179,9 +183,10 @@ void GlRenderer::update(const Scene& scene) {
 GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext context)
     : GlRenderer(scene, options, context, false) {}
 
-GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless)
+GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
-    check_renderable(scene);  // before any OpenGL is set up
+    check_renderable(input);  // before any OpenGL is set up
+    const Scene scene = scale_lengths(input, float_safe_length_scale(input));  // as in update
     Impl& gl = *impl_;
     if (headless) {
         require_gl_libraries();
