@@ -18,9 +18,10 @@ struct RenderOptions {
     // per R11, whether that is allowed.
     Reflection fallback_reflection = default_reflection;
     Shading fallback_shading = default_shading;
-    // Per-pixel kernels: the fastest this CPU runs (AVX2+FMA where present),
-    // or the portable ones (for comparing the two).
-    enum class Kernels { Best, Portable };
+    // Per-pixel kernels: the fastest this CPU runs (AVX-512, else AVX2+FMA,
+    // else portable), or one set by name (for comparing them; a set the CPU
+    // lacks is an ArgumentError, see kernel_set_available).
+    enum class Kernels { Best, Portable, Avx2, Avx512 };
     Kernels kernels = Kernels::Best;
 };
 
@@ -40,6 +41,9 @@ struct PixelProbe {
     glm::vec3 intensity{0.0f};     // I before clamping and gamma, as shaded
     Rgb8 rgb{};                    // the pixel
 };
+
+// Whether this CPU runs the given set of per-pixel kernels.
+bool kernel_set_available(RenderOptions::Kernels kernels);
 
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)
 // so that several frames can be drawn without rebuilding it.
@@ -72,6 +76,8 @@ public:
 
     std::size_t triangle_count() const;
     int thread_count() const;
+    // The set of per-pixel kernels in use: "avx512", "avx2" or "portable".
+    const char* kernel_set() const;
     // Pixels the last frame covered, each shaded once (hidden ones are not).
     std::size_t shaded_pixel_count() const;
 

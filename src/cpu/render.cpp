@@ -170,7 +170,29 @@ struct BandScratch {
     std::size_t shaded_pixels = 0;               // this frame, by this thread
 };
 
+const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
+    if (!kernel_set_available(set))
+        throw ArgumentError(std::string("this CPU lacks the instructions of the ") +
+                            (set == RenderOptions::Kernels::Avx512 ? "AVX-512" : "AVX2") +
+                            " kernel set");
+    switch (set) {
+        case RenderOptions::Kernels::Portable: return kernels::portable_kernels;
+        case RenderOptions::Kernels::Avx2: return kernels::avx2_kernels;
+        case RenderOptions::Kernels::Avx512: return kernels::avx512_kernels;
+        case RenderOptions::Kernels::Best: break;
+    }
+    return kernels::select_kernels();
+}
+
 }  // namespace
+
+bool kernel_set_available(RenderOptions::Kernels set) {
+    switch (set) {
+        case RenderOptions::Kernels::Avx2: return kernels::cpu_has_avx2();
+        case RenderOptions::Kernels::Avx512: return kernels::cpu_has_avx512();
+        default: return true;
+    }
+}
 
 struct Renderer::Impl {
     Scene scene;
@@ -196,8 +218,7 @@ struct Renderer::Impl {
         : scene(s),
           options(o),
           pool(o.threads),
-          kernels(o.kernels == RenderOptions::Kernels::Portable ? kernels::portable_kernels
-                                                                : kernels::select_kernels()) {}
+          kernels(pick_kernels(o.kernels)) {}
 
     std::size_t mesh_builds = 0;  // how often prepare() built the meshes
 
@@ -688,6 +709,8 @@ std::size_t Renderer::triangle_count() const {
 }
 
 int Renderer::thread_count() const { return impl_->pool.size(); }
+
+const char* Renderer::kernel_set() const { return impl_->kernels.name; }
 
 std::size_t Renderer::shaded_pixel_count() const {
     std::size_t count = 0;

@@ -1,7 +1,7 @@
 // The per-pixel stages that run on many pixels at once: Phong-shading a run
 // of pixels and turning intensities into pixel values. Compiled once per
-// instruction set (AVX2+FMA and a portable baseline) from the same template
-// text; `select_kernels` picks one at run time.
+// instruction set (AVX-512, AVX2+FMA and a portable baseline) from the same
+// template text; `select_kernels` picks one at run time.
 #pragma once
 
 #include <cstddef>
@@ -44,9 +44,13 @@ struct Kernels {
 };
 
 extern const Kernels portable_kernels;
-extern const Kernels avx2_kernels;  // only valid where the CPU has AVX2 and FMA
+extern const Kernels avx2_kernels;    // only valid where the CPU has AVX2 and FMA
+extern const Kernels avx512_kernels;  // only where it has AVX-512 F, BW, DQ, VL (and FMA)
 
-// The fastest set this CPU runs.
+bool cpu_has_avx2();
+bool cpu_has_avx512();
+
+// The fastest set this CPU runs: AVX-512, else AVX2, else portable.
 const Kernels& select_kernels();
 
 }  // namespace litkit::kernels
