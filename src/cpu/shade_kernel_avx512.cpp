@@ -6,6 +6,6 @@
 namespace litkit::kernels {
 
 using Avx512Impl = detail::Impl<xsimd::avx512bw>;
-const Kernels avx512_kernels{"avx512", &Avx512Impl::shade_phong, &Avx512Impl::encode};
+const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::shade_phong, &Avx512Impl::encode};
 
 }  // namespace litkit::kernels
