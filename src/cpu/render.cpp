@@ -121,6 +121,8 @@ glm::vec3 light_with(Reflection reflection, std::span<const PreparedLight> light
 }
 
 constexpr int band_height = 16;
+// Spans of one triangle shorter than this are interpolated pixel by pixel.
+constexpr std::size_t short_span = 8;
 constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
 
 // Nearest integer, halves up; |v| stays far below 2^31 thanks to the guard
@@ -661,26 +663,41 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             flush();
         if (run_length == 0) run_first = x;
         run_object = &object;
-        float corner[3][6];
-        for (int k = 0; k < 3; ++k) {
-            if (tri->clipped < 0) {
-                const glm::vec3& p = object.positions[tri->vertex[k]];
-                const glm::vec3& n = object.normals[tri->vertex[k]];
-                corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
-                corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
-            } else {
-                std::copy_n((*tri->varyings)[k].begin(), 6, corner[k]);
-            }
-        }
-        // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
-        const float* face = object.shading == Shading::Faceted
-                                ? &object.face_normals[tri->source].x
-                                : nullptr;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
-        kernels.interpolate(&s.depth[i], &s.weight1[i], &s.weight2[i], count, corner, face,
-                            {s.px.data() + run_length, s.py.data() + run_length,
-                             s.pz.data() + run_length, s.nx.data() + run_length,
-                             s.ny.data() + run_length, s.nz.data() + run_length});
+        if (count < short_span) {
+            // Small triangles: the scalar formulas, pixel by pixel (a SIMD
+            // call would mostly pad); the same roundings as the kernel.
+            for (std::size_t k = 0; k < count; ++k) {
+                const float w = 1.0f / s.depth[i + k];
+                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
+                const float q0 = 1.0f - q1 - q2;
+                glm::vec3 p, n;
+                interpolate_surface(object, *tri, q0, q1, q2, p, n);
+                const std::size_t at = run_length + k;
+                s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
+                s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
+            }
+        } else {
+            float corner[3][6];
+            for (int k = 0; k < 3; ++k) {
+                if (tri->clipped < 0) {
+                    const glm::vec3& p = object.positions[tri->vertex[k]];
+                    const glm::vec3& n = object.normals[tri->vertex[k]];
+                    corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
+                    corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
+                } else {
+                    std::copy_n((*tri->varyings)[k].begin(), 6, corner[k]);
+                }
+            }
+            // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
+            const float* face = object.shading == Shading::Faceted
+                                    ? &object.face_normals[tri->source].x
+                                    : nullptr;
+            kernels.interpolate(&s.depth[i], &s.weight1[i], &s.weight2[i], count, corner, face,
+                                {s.px.data() + run_length, s.py.data() + run_length,
+                                 s.pz.data() + run_length, s.nx.data() + run_length,
+                                 s.ny.data() + run_length, s.nz.data() + run_length});
+        }
         run_length += count;
         x = span_end - 1;
     }
