@@ -56,14 +56,29 @@ void shade_block(benchmark::State& state, const litkit::kernels::Kernels& kernel
     state.SetItemsProcessed(state.iterations() * static_cast<long>(block.px.size()));
 }
 
+void BM_ShadeBlockAvx512Phong(benchmark::State& state) {
+    if (!litkit::kernels::cpu_has_avx512()) {
+        state.SkipWithError("this CPU lacks AVX-512");
+        return;
+    }
+    shade_block(state, litkit::kernels::avx512_kernels, litkit::Reflection::Phong);
+}
 void BM_ShadeBlockAvx2Phong(benchmark::State& state) {
-    shade_block(state, litkit::kernels::select_kernels(), litkit::Reflection::Phong);
+    if (!litkit::kernels::cpu_has_avx2()) {
+        state.SkipWithError("this CPU lacks AVX2");
+        return;
+    }
+    shade_block(state, litkit::kernels::avx2_kernels, litkit::Reflection::Phong);
 }
 void BM_ShadeBlockPortablePhong(benchmark::State& state) {
     shade_block(state, litkit::kernels::portable_kernels, litkit::Reflection::Phong);
 }
 void BM_ShadeBlockAvx2Lambert(benchmark::State& state) {
-    shade_block(state, litkit::kernels::select_kernels(), litkit::Reflection::Lambert);
+    if (!litkit::kernels::cpu_has_avx2()) {
+        state.SkipWithError("this CPU lacks AVX2");
+        return;
+    }
+    shade_block(state, litkit::kernels::avx2_kernels, litkit::Reflection::Lambert);
 }
 
 // The public scalar function, one point at a time (what a student calls).
@@ -145,6 +160,7 @@ BENCHMARK(BM_WorldMesh261kNormals)
 BENCHMARK(BM_StageSetup261kTriangles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageRasterizeFlatFill1920x1080)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EncodeDefaultScenePng)->Arg(0)->Arg(1)->Arg(3)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShadeBlockAvx512Phong);
 BENCHMARK(BM_ShadeBlockAvx2Phong);
 BENCHMARK(BM_ShadeBlockPortablePhong);
 BENCHMARK(BM_ShadeBlockAvx2Lambert);

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "litkit/error.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 
@@ -72,6 +74,77 @@ TEST(Render, PortableAndBestKernelsDrawTheSamePicture) {
         EXPECT_EQ(max_difference(best, fallback), 0) << file;
         EXPECT_GT(covered_pixels(best, litkit::to_rgb8(scene.output.background)), 0) << file;
     }
+}
+
+// The 16-lane AVX-512 set, the 8-lane AVX2 set and the portable set run the
+// same template text, none with fused multiply-adds (-ffp-contract=off): their
+// pictures agree byte for byte, on every example, the bench scenes and every
+// reflection model under every shading.
+TEST(Render, Avx512Avx2AndPortableKernelsDrawTheSameBytes) {
+    using litkit::RenderOptions;
+    if (!litkit::kernel_set_available(RenderOptions::Kernels::Avx512))
+        GTEST_SKIP() << "this CPU lacks AVX-512 F/BW/DQ/VL (or the OS keeps it off): "
+                        "only the AVX2 and portable sets can run here";
+    ASSERT_TRUE(litkit::kernel_set_available(RenderOptions::Kernels::Avx2));
+    {
+        litkit::Renderer best(small(litkit::default_scene()));
+        std::printf("best kernel set on this CPU: %s\n", best.kernel_set());
+        EXPECT_STREQ(best.kernel_set(), "avx512");
+    }
+    std::vector<litkit::Scene> scenes;
+    for (const fs::path& file : example_scenes())
+        scenes.push_back(small(litkit::load_scene(std::span(&file, 1))));
+    for (const char* name : {"fill.toml", "sphere-65k.toml", "teapot-64.toml"}) {
+        const fs::path file = fs::path(LITKIT_SOURCE_DIR) / "bench" / "scenes" / name;
+        litkit::Scene scene = litkit::load_scene(std::span(&file, 1));
+        scene.output.width = 320;  // odd run lengths and tails of every size
+        scene.output.height = 181;
+        scenes.push_back(scene);
+    }
+    const litkit::Scene base = small(litkit::default_scene());
+    for (int model = 0; model < litkit::reflection_count; ++model) {
+        const auto reflection = static_cast<litkit::Reflection>(model);
+        for (litkit::Shading shading : {litkit::Shading::Flat, litkit::Shading::Gouraud,
+                                        litkit::Shading::Phong, litkit::Shading::Faceted}) {
+            litkit::Scene scene = base;
+            scene.reflection = reflection;
+            scene.shading = shading;
+            scene.output.gamma = 2.2f;
+            scenes.push_back(scene);
+        }
+    }
+    ASSERT_GE(scenes.size(), 40u);
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        litkit::Renderer wide(scenes[i], {.kernels = RenderOptions::Kernels::Avx512});
+        litkit::Renderer narrow(scenes[i], {.kernels = RenderOptions::Kernels::Avx2});
+        litkit::Renderer portable(scenes[i], {.kernels = RenderOptions::Kernels::Portable});
+        ASSERT_STREQ(wide.kernel_set(), "avx512");
+        ASSERT_STREQ(narrow.kernel_set(), "avx2");
+        const litkit::Image a = wide.render();
+        const litkit::Image b = narrow.render();
+        const litkit::Image c = portable.render();
+        EXPECT_GT(covered_pixels(a, litkit::to_rgb8(scenes[i].output.background)), 0)
+            << "scene " << i;
+        EXPECT_TRUE(a.rgb == b.rgb) << "scene " << i << ": largest difference "
+                                    << max_difference(a, b);
+        EXPECT_TRUE(a.rgb == c.rgb) << "scene " << i << ": largest difference from portable "
+                                    << max_difference(a, c);
+    }
+}
+
+TEST(Render, AKernelSetTheCpuLacksIsAnError) {
+    using litkit::RenderOptions;
+    for (RenderOptions::Kernels set : {RenderOptions::Kernels::Avx2, RenderOptions::Kernels::Avx512}) {
+        if (litkit::kernel_set_available(set)) {
+            EXPECT_NO_THROW(litkit::Renderer(small(litkit::default_scene()), {.kernels = set}));
+        } else {
+            EXPECT_THROW(litkit::Renderer(small(litkit::default_scene()), {.kernels = set}),
+                         litkit::ArgumentError);
+        }
+    }
+    litkit::Renderer portable(small(litkit::default_scene()),
+                              {.kernels = RenderOptions::Kernels::Portable});
+    EXPECT_STREQ(portable.kernel_set(), "portable");
 }
 
 TEST(Render, RenderingTwiceIntoTheSameImageGivesTheSamePicture) {

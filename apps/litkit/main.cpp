@@ -223,7 +223,8 @@ public:
     }
     std::string description() const {
         if (gl_) return "OpenGL backend: " + gl_->description();
-        return "CPU backend: " + std::to_string(cpu_->thread_count()) + " threads";
+        return "CPU backend: " + std::to_string(cpu_->thread_count()) + " threads, " +
+               cpu_->kernel_set() + " kernels";
     }
     // Pixels shaded in the last frame, where the backend counts them.
     std::optional<std::size_t> shaded_pixel_count() const {

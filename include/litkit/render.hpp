@@ -23,11 +23,15 @@ struct RenderOptions {
     Reflection fallback_reflection = default_reflection;
     /// The shading model used where the scene leaves it out (as fallback_reflection).
     Shading fallback_shading = default_shading;
-    /// Per-pixel kernels: the fastest this CPU runs (AVX2+FMA where present),
-    /// or the portable ones (for comparing the two).
+    /// Per-pixel kernels: the fastest this CPU runs (AVX-512, else AVX2+FMA,
+    /// else portable), or one set by name (for comparing them; a set the CPU
+    /// lacks is an ArgumentError, see kernel_set_available). Every set draws
+    /// the same bytes.
     enum class Kernels {
-        Best,     ///< AVX2+FMA where the CPU has them, else the portable ones.
-        Portable  ///< The portable kernels, on any CPU.
+        Best,      ///< AVX-512 where the CPU has it, else AVX2+FMA, else portable.
+        Portable,  ///< The portable kernels, on any CPU.
+        Avx2,      ///< The AVX2+FMA kernels (8 lanes).
+        Avx512     ///< The AVX-512 kernels (16 lanes).
     };
     /// Which per-pixel kernels to run.
     Kernels kernels = Kernels::Best;
@@ -49,6 +53,9 @@ struct PixelProbe {
     glm::vec3 intensity{0.0f};     ///< I before clamping and gamma, as shaded
     Rgb8 rgb{};                    ///< the pixel
 };
+
+/// Whether this CPU runs the given set of per-pixel kernels.
+bool kernel_set_available(RenderOptions::Kernels kernels);
 
 // Holds a scene's prepared geometry (meshes, world-space vertices, normals)
 // so that several frames can be drawn without rebuilding it.
@@ -98,6 +105,8 @@ public:
     std::size_t triangle_count() const;
     /// The threads that draw a frame (RenderOptions::threads, 0 resolved).
     int thread_count() const;
+    /// The set of per-pixel kernels in use: "avx512", "avx2" or "portable".
+    const char* kernel_set() const;
     /// Pixels the last frame covered, each shaded once (hidden ones are not).
     std::size_t shaded_pixel_count() const;
 

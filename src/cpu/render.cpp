@@ -123,6 +123,8 @@ glm::vec3 light_with(Reflection reflection, std::span<const PreparedLight> light
 }
 
 constexpr int band_height = 16;
+// Spans of one triangle shorter than this are interpolated pixel by pixel.
+constexpr std::size_t short_span = 8;
 constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
 
 // Nearest integer, halves up; |v| stays far below 2^31 thanks to the guard
@@ -167,12 +169,33 @@ struct BandScratch {
     std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
     std::vector<float> r, g, b;                  // one row of intensities
     std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
-    std::vector<int> run_x;                      // their pixel columns
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
 };
 
+const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
+    if (!kernel_set_available(set))
+        throw ArgumentError(std::string("this CPU lacks the instructions of the ") +
+                            (set == RenderOptions::Kernels::Avx512 ? "AVX-512" : "AVX2") +
+                            " kernel set");
+    switch (set) {
+        case RenderOptions::Kernels::Portable: return kernels::portable_kernels;
+        case RenderOptions::Kernels::Avx2: return kernels::avx2_kernels;
+        case RenderOptions::Kernels::Avx512: return kernels::avx512_kernels;
+        case RenderOptions::Kernels::Best: break;
+    }
+    return kernels::select_kernels();
+}
+
 }  // namespace
+
+bool kernel_set_available(RenderOptions::Kernels set) {
+    switch (set) {
+        case RenderOptions::Kernels::Avx2: return kernels::cpu_has_avx2();
+        case RenderOptions::Kernels::Avx512: return kernels::cpu_has_avx512();
+        default: return true;
+    }
+}
 
 struct Renderer::Impl {
     float length_scale;
@@ -202,8 +225,7 @@ struct Renderer::Impl {
           scene(scale_lengths(s, length_scale)),
           options(o),
           pool(o.threads),
-          kernels(o.kernels == RenderOptions::Kernels::Portable ? kernels::portable_kernels
-                                                                : kernels::select_kernels()) {}
+          kernels(pick_kernels(o.kernels)) {}
 
     std::size_t mesh_builds = 0;  // how often prepare() built the meshes
 
@@ -582,21 +604,22 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     s.g.resize(w);
     s.b.resize(w);
     for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz}) v->resize(w);
-    s.run_x.resize(w);
     const std::size_t offset = static_cast<std::size_t>(y % band_height) * w;
     const float eye[3] = {scene.observer.position.x, scene.observer.position.y,
                           scene.observer.position.z};
 
-    // A run: consecutive Phong or faceted pixels of one object, shaded together.
+    // A run: consecutive Phong or faceted pixels of one object, shaded
+    // together; it is made of spans of one triangle each, interpolated
+    // together (the corners are the same along a span).
     std::size_t run_length = 0;
+    int run_first = 0;
     const PreparedObject* run_object = nullptr;
     auto flush = [&] {
         if (run_length == 0) return;
         const kernels::SurfaceRun surface{s.px.data(), s.py.data(), s.pz.data(), s.nx.data(),
                                           s.ny.data(), s.nz.data(), run_length};
-        const int first = s.run_x[0];
-        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, eye,
-                            surface, {s.r.data() + first, s.g.data() + first, s.b.data() + first});
+        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, eye, surface,
+                            {s.r.data() + run_first, s.g.data() + run_first, s.b.data() + run_first});
         run_length = 0;
     };
 
@@ -611,9 +634,6 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             continue;
         }
         const PreparedObject& object = objects[tri->object];
-        // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
-        const float w = 1.0f / s.depth[i];
-        const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
         if (object.shading == Shading::Flat) {
             flush();
             const glm::vec3& c = flat_colors[tri->object][tri->source];
@@ -623,6 +643,9 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         // Varyings of the three corners: the mesh's, or the clipped piece's.
         if (object.shading == Shading::Gouraud) {
             flush();
+            // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
+            const float w = 1.0f / s.depth[i];
+            const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
             glm::vec3 c;
             if (tri->clipped < 0) {
                 const auto& colors = vertex_colors[tri->object];
@@ -637,14 +660,52 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             s.r[x] = c.x, s.g[x] = c.y, s.b[x] = c.z;
             continue;
         }
-        if (run_object != &object || (run_length > 0 && s.run_x[run_length - 1] != x - 1)) flush();
+        // Phong or faceted: the span of this triangle, interpolated at once
+        // (the formulas of interpolate_surface, in SIMD).
+        int span_end = x + 1;
+        while (span_end < end && s.visible[offset + static_cast<std::size_t>(span_end)] == tri)
+            ++span_end;
+        if (run_object != &object || (run_length > 0 && run_first + static_cast<int>(run_length) != x))
+            flush();
+        if (run_length == 0) run_first = x;
         run_object = &object;
-        glm::vec3 p, n;
-        interpolate_surface(object, *tri, q0, q1, q2, p, n);
-        s.px[run_length] = p.x, s.py[run_length] = p.y, s.pz[run_length] = p.z;
-        s.nx[run_length] = n.x, s.ny[run_length] = n.y, s.nz[run_length] = n.z;
-        s.run_x[run_length] = x;
-        ++run_length;
+        const std::size_t count = static_cast<std::size_t>(span_end - x);
+        if (count < short_span) {
+            // Small triangles: the scalar formulas, pixel by pixel (a SIMD
+            // call would mostly pad); the same roundings as the kernel.
+            for (std::size_t k = 0; k < count; ++k) {
+                const float w = 1.0f / s.depth[i + k];
+                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
+                const float q0 = 1.0f - q1 - q2;
+                glm::vec3 p, n;
+                interpolate_surface(object, *tri, q0, q1, q2, p, n);
+                const std::size_t at = run_length + k;
+                s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
+                s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
+            }
+        } else {
+            float corner[3][6];
+            for (int k = 0; k < 3; ++k) {
+                if (tri->clipped < 0) {
+                    const glm::vec3& p = object.positions[tri->vertex[k]];
+                    const glm::vec3& n = object.normals[tri->vertex[k]];
+                    corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
+                    corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
+                } else {
+                    std::copy_n((*tri->varyings)[k].begin(), 6, corner[k]);
+                }
+            }
+            // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
+            const float* face = object.shading == Shading::Faceted
+                                    ? &object.face_normals[tri->source].x
+                                    : nullptr;
+            kernels.interpolate(&s.depth[i], &s.weight1[i], &s.weight2[i], count, corner, face,
+                                {s.px.data() + run_length, s.py.data() + run_length,
+                                 s.pz.data() + run_length, s.nx.data() + run_length,
+                                 s.ny.data() + run_length, s.nz.data() + run_length});
+        }
+        run_length += count;
+        x = span_end - 1;
     }
     flush();
     if (y == probe_y && probe_x >= begin && probe_x < end && s.visible[offset + probe_x])
@@ -707,6 +768,8 @@ std::size_t Renderer::triangle_count() const {
 }
 
 int Renderer::thread_count() const { return impl_->pool.size(); }
+
+const char* Renderer::kernel_set() const { return impl_->kernels.name; }
 
 std::size_t Renderer::shaded_pixel_count() const {
     std::size_t count = 0;

@@ -2,11 +2,31 @@
 
 namespace litkit::kernels {
 
-const Kernels& select_kernels() {
+// __builtin_cpu_supports also checks that the OS saves the wider registers
+// (XGETBV), so a kernel that keeps AVX-512 off is honoured.
+bool cpu_has_avx2() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return avx2_kernels;
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+    return false;
 #endif
+}
+
+bool cpu_has_avx512() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_cpu_init();
+    return cpu_has_avx2() && __builtin_cpu_supports("avx512f") &&
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+#else
+    return false;
+#endif
+}
+
+const Kernels& select_kernels() {
+    if (cpu_has_avx512()) return avx512_kernels;
+    if (cpu_has_avx2()) return avx2_kernels;
     return portable_kernels;
 }
 

@@ -1,7 +1,7 @@
 // The per-pixel stages that run on many pixels at once: Phong-shading a run
 // of pixels and turning intensities into pixel values. Compiled once per
-// instruction set (AVX2+FMA and a portable baseline) from the same template
-// text; `select_kernels` picks one at run time.
+// instruction set (AVX-512, AVX2+FMA and a portable baseline) from the same
+// template text; `select_kernels` picks one at run time.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +25,16 @@ struct SurfaceRun {
     std::size_t count;
 };
 
+// Where interpolate writes a span's surfaces (structure of arrays).
+struct SurfaceOut {
+    float* px;
+    float* py;
+    float* pz;
+    float* nx;
+    float* ny;
+    float* nz;
+};
+
 struct ColorRun {
     float* r;
     float* g;
@@ -33,6 +43,15 @@ struct ColorRun {
 
 struct Kernels {
     const char* name;
+    // docs/spec.md §3 Phong shading's varyings along a span of pixels of one
+    // triangle: from the visibility buffer's 1/w and weights b1/w1, b2/w2,
+    // the perspective-correct q1 = b1/w1 · w, q2 likewise, q0 = 1 − q1 − q2,
+    // and p, N = q0·c0 + q1·c1 + q2·c2 from the corners (corner[k] = p, N).
+    // With `face_normal` (faceted shading), N is that normal. The same
+    // roundings as the scalar formulas in render.cpp: no fused multiply-add.
+    void (*interpolate)(const float* inverse_w, const float* weight1, const float* weight2,
+                        std::size_t count, const float (*corner)[6], const float* face_normal,
+                        const SurfaceOut& out);
     // docs/spec.md §3 Phong shading: renormalise the normal, light per pixel.
     void (*shade_phong)(Reflection reflection, std::span<const equations::PreparedLight> lights,
                         const Material& material, const float eye[3], const SurfaceRun& surface,
@@ -44,9 +63,13 @@ struct Kernels {
 };
 
 extern const Kernels portable_kernels;
-extern const Kernels avx2_kernels;  // only valid where the CPU has AVX2 and FMA
+extern const Kernels avx2_kernels;    // only valid where the CPU has AVX2 and FMA
+extern const Kernels avx512_kernels;  // only where it has AVX-512 F, BW, DQ, VL (and FMA)
 
-// The fastest set this CPU runs.
+bool cpu_has_avx2();
+bool cpu_has_avx512();
+
+// The fastest set this CPU runs: AVX-512, else AVX2, else portable.
 const Kernels& select_kernels();
 
 }  // namespace litkit::kernels

@@ -5,6 +5,6 @@
 namespace litkit::kernels {
 
 using Avx2Impl = detail::Impl<xsimd::avx2>;
-const Kernels avx2_kernels{"avx2", &Avx2Impl::shade_phong, &Avx2Impl::encode};
+const Kernels avx2_kernels{"avx2", &Avx2Impl::interpolate, &Avx2Impl::shade_phong, &Avx2Impl::encode};
 
 }  // namespace litkit::kernels

@@ -72,6 +72,57 @@ struct Impl {
         });
     }
 
+    // A value the compiler may not fuse into a multiply-add with what comes
+    // next (the kernels are built with -mfma, and GCC contracts a * b + c
+    // across intrinsics): interpolate must round exactly as the scalar code.
+    static Batch rounded(Batch value) {
+#if defined(__x86_64__) || defined(__i386__)
+        auto reg = static_cast<typename Batch::register_type>(value);
+        asm("" : "+v"(reg));
+        return Batch(reg);
+#else
+        return value;
+#endif
+    }
+
+    static void interpolate(const float* inverse_w, const float* weight1, const float* weight2,
+                            std::size_t count, const float (*corner)[6], const float* face_normal,
+                            const SurfaceOut& out) {
+        float* outputs[6] = {out.px, out.py, out.pz, out.nx, out.ny, out.nz};
+        const int mixed = face_normal ? 3 : 6;
+        auto span = [&](std::size_t i, const float* iw, const float* w1, const float* w2,
+                        float* const* dest) {
+            const Batch w = Batch(1.0f) / Batch::load_unaligned(iw);
+            const Batch q1 = rounded(Batch::load_unaligned(w1) * w);
+            const Batch q2 = rounded(Batch::load_unaligned(w2) * w);
+            const Batch q0 = Batch(1.0f) - q1 - q2;
+            for (int k = 0; k < mixed; ++k) {
+                const Batch a = rounded(q0 * Batch(corner[0][k]));
+                const Batch b = rounded(q1 * Batch(corner[1][k]));
+                const Batch c = rounded(q2 * Batch(corner[2][k]));
+                (a + b + c).store_unaligned(dest[k] + i);
+            }
+            for (int k = mixed; k < 6; ++k) Batch(face_normal[k - 3]).store_unaligned(dest[k] + i);
+        };
+        std::size_t i = 0;
+        for (; i + width <= count; i += width) span(i, inverse_w + i, weight1 + i, weight2 + i, outputs);
+        if (i < count) {
+            alignas(64) float in[3][width];
+            alignas(64) float result[6][width];
+            float* dest[6] = {result[0], result[1], result[2], result[3], result[4], result[5]};
+            for (std::size_t lane = 0; lane < width; ++lane) {
+                // Pad with the last pixel: valid numbers, results unused.
+                const std::size_t from = i + lane < count ? i + lane : count - 1;
+                in[0][lane] = inverse_w[from];
+                in[1][lane] = weight1[from];
+                in[2][lane] = weight2[from];
+            }
+            span(0, in[0], in[1], in[2], dest);
+            for (int k = 0; k < 6; ++k)
+                for (std::size_t lane = 0; i + lane < count; ++lane) outputs[k][i + lane] = result[k][lane];
+        }
+    }
+
     // Same arithmetic as litkit::to_pixel: clamp (NaN → 0), gamma, ·255,
     // round half up (the values are ≥ 0, so this is lround).
     static Batch to_levels(Batch intensity, float gamma) {

@@ -4,6 +4,6 @@
 namespace litkit::kernels {
 
 using PortableImpl = detail::Impl<xsimd::default_arch>;
-const Kernels portable_kernels{"portable", &PortableImpl::shade_phong, &PortableImpl::encode};
+const Kernels portable_kernels{"portable", &PortableImpl::interpolate, &PortableImpl::shade_phong, &PortableImpl::encode};
 
 }  // namespace litkit::kernels
