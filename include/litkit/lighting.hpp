@@ -20,18 +20,23 @@
 
 namespace litkit {
 
-// Colours. One convention across the API: every colour of a scene
-// (Material::color, Light::color, OutputSettings::background) is a
-// glm::vec3 of linear values, 0–1 per channel (1 = full). Scene files
-// write colours as 0–255 integers (or "#rrggbb"), and images hold 8-bit
-// pixels; these two convert between the two, and are exact for the 256
-// byte values: to_rgb8(from_rgb8(b)) == b for every b.
-using Rgb8 = std::array<std::uint8_t, 3>;  // 8 bits per channel, 0–255: a scene file's or a pixel's
-// Each byte / 255 (so 255 → 1.0f).
+/// An 8-bit colour, 0–255 per channel (red, green, blue): a scene file's
+/// colour or a pixel's.
+///
+/// One convention across the API: every colour of a scene
+/// (Material::color, Light::color, OutputSettings::background) is a
+/// glm::vec3 of linear values, 0–1 per channel (1 = full). Scene files
+/// write colours as 0–255 integers (or "#rrggbb"), and images hold 8-bit
+/// pixels; from_rgb8 and to_rgb8 convert between the two, and are exact for
+/// the 256 byte values: to_rgb8(from_rgb8(b)) == b for every b.
+using Rgb8 = std::array<std::uint8_t, 3>;
+/// An 8-bit colour as a 0–1 colour: each byte / 255 (so 255 → 1.0f).
+/// The inverse of to_rgb8 for every byte value. Never throws.
 inline glm::vec3 from_rgb8(const Rgb8& rgb) {
     return glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f;
 }
-// Each channel clamped to [0, 1] (NaN → 0), × 255, rounded half up.
+/// A 0–1 colour as 8 bits per channel: each channel clamped to [0, 1]
+/// (NaN → 0), × 255, rounded half up. Never throws.
 inline Rgb8 to_rgb8(const glm::vec3& color) {
     auto byte = [](float c) {
         const float clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // NaN fails c > 0
@@ -40,11 +45,12 @@ inline Rgb8 to_rgb8(const glm::vec3& color) {
     return {byte(color.x), byte(color.y), byte(color.z)};
 }
 
-// docs/spec.md §4 (IM1–IM4) and §9.1 (LC2). The order is the spec's, and that
-// of every list users see (validation's names, `litkit view`'s keys 1–9).
-// The models are one list: this enumeration, its row in `reflection_models`
-// (lighting.cpp) and its branch in equations::reflect are all a new model
-// needs; every path (scalar, SIMD, GLSL, validation) follows from them.
+/// The reflection models of docs/spec.md §4 (IM1–IM4) and §9.1 (LC2): how
+/// much light a surface point sends to the eye. The order is the spec's, and
+/// that of every list users see (validation's names, `litkit view`'s keys
+/// 1–9). The models are one list: this enumeration, its row in
+/// reflection_models() and its branch in equations::reflect are all a new
+/// model needs; every path (scalar, SIMD, GLSL, validation) follows from them.
 enum class Reflection {
     Lambert,       ///< "lambert": diffuse only, D = max(N·L, 0).
     HalfLambert,   ///< "half-lambert": Valve's wrapped diffuse, D = (0.5·N·L + 0.5)².
@@ -92,12 +98,12 @@ std::optional<Reflection> parse_reflection(std::string_view text);
 /// The shading model a scene-file spelling names (exact, lower case), or nothing.
 std::optional<Shading> parse_shading(std::string_view text);
 
-// Surface coefficients. `color` is C of docs/spec.md §4, linear 0–1 per
-// channel (a scene file's 0–255 colour / 255: from_rgb8).
-// The parameters of docs/spec.md §9.1 are here whatever the model, so that
-// switching models keeps them; a model ignores those it does not use.
+/// The surface coefficients of docs/spec.md §4 (C, k_a, k_d, k_s, α). The
+/// parameters of docs/spec.md §9.1 are here whatever the model, so that
+/// switching models keeps them; a model ignores those it does not use.
 struct Material {
-    /// C: the surface colour, per channel in [0, 1] (the scene file's 0–255 / 255).
+    /// C: the surface colour, linear, 0–1 per channel (a scene file's 0–255 /
+    /// 255: from_rgb8). A scene built in code is only checked to be finite.
     glm::vec3 color{1.0f, 1.0f, 1.0f};
     /// k_a, ambient coefficient in [0, 1].
     float ka = 0.1f;
@@ -176,10 +182,13 @@ using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotL
 struct Light {
     /// Which kind, with its position, direction and cone.
     LightKind kind;
-    glm::vec3 color{1.0f, 1.0f, 1.0f};  // linear 0–1 per channel (a scene file's colour / 255)
+    /// The light's colour, linear, 0–1 per channel (a scene file's 0–255 /
+    /// 255: from_rgb8). A scene built in code is only checked to be finite.
+    glm::vec3 color{1.0f, 1.0f, 1.0f};
+    /// The scale of the colour (≥ 0, finite): I_L = intensity · color.
     float intensity = 1.0f;
 
-    /// I_L of docs/spec.md §4: intensity · colour / 255.
+    /// I_L of docs/spec.md §4: intensity · color.
     glm::vec3 radiance() const { return intensity * color; }
 };
 

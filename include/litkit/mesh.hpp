@@ -82,30 +82,36 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting);
 std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
                                       float crease_angle_degrees);
 
-// What is wrong with a mesh given in memory (scene.hpp's MeshDataShape),
-// checked as load_obj checks a file: no triangles, a position that is not
-// finite, or a triangle index beyond the positions. Empty when it is usable.
-// O(positions + triangles).
+/// What is wrong with a mesh given in memory (scene.hpp's MeshDataShape),
+/// checked as load_obj checks a file: no triangles, a position that is not
+/// finite, or a triangle index beyond the positions. One message, for the
+/// first problem found; empty when the mesh is usable. Never throws;
+/// O(positions + triangles).
 std::string check_mesh_data(const Mesh& mesh);
 
-// The mesh as Wavefront OBJ text (`v` lines, then `f` lines, 1-based), which
-// load_obj reads back as the same positions and triangles (each float
-// written with enough digits to round-trip).
+/// The mesh as Wavefront OBJ text (`v` lines, then `f` lines, 1-based), which
+/// load_obj reads back as the same positions and triangles (each float
+/// written with enough digits to round-trip). Normals are not written.
 std::string mesh_to_obj(const Mesh& mesh);
 
-// Signed volume enclosed by the triangles, (1/6) Σ a · (b × c): positive
-// for a closed mesh wound counter-clockwise seen from outside, negative for
-// one turned inside out (its faces wind clockwise). Meaningful for closed
-// meshes only.
+/// Signed volume enclosed by the triangles, (1/6) Σ a · (b × c) over the
+/// triangles (a, b, c), in double precision, in cubic units of the mesh's
+/// coordinates: positive for a closed mesh wound counter-clockwise seen from
+/// outside, negative for one turned inside out (its faces wind clockwise).
+/// Meaningful for closed meshes only (is_closed). Every index must be below
+/// positions.size() (check_mesh_data): they are not checked here.
 double signed_volume(const Mesh& mesh);
 
-// True when every edge of the mesh is shared by exactly two triangles that
-// traverse it in opposite directions (positions compared by index after
-// welding equal coordinates): a closed, consistently wound surface, for
-// which signed_volume gives the inside's volume.
+/// True when every edge of the mesh is shared by exactly two triangles that
+/// traverse it in opposite directions (positions compared by index after
+/// welding exactly equal coordinates): a closed, consistently wound surface,
+/// for which signed_volume gives the inside's volume. False for a mesh
+/// without triangles or with a degenerate edge. Every index must be below
+/// positions.size() (check_mesh_data): they are not checked here.
 bool is_closed(const Mesh& mesh);
 
-// Axis-aligned bounding box of the positions (both zero for an empty mesh).
+/// Axis-aligned bounding box of a mesh's positions (both corners zero for a
+/// mesh without positions).
 struct Bounds {
     /// The smallest x, y and z.
     glm::vec3 min{0.0f};

@@ -13,13 +13,18 @@
 
 namespace litkit {
 
-// The most threads a Renderer starts.
+/// The most threads a Renderer starts: the largest RenderOptions::threads allowed.
 inline constexpr int max_render_threads = 1024;
 
+/// How a Renderer draws: its threads, the models used where the scene gives
+/// none, and the per-pixel kernels.
 struct RenderOptions {
-    int threads = 0;  // 0: one per hardware thread; at most max_render_threads
-    // Used where the scene leaves [lighting] out (R10); the caller decides,
-    // per R11, whether that is allowed.
+    /// The threads that draw a frame: 0 for one per hardware thread (1 if that
+    /// is unknown), else 1–max_render_threads. Outside 0–max_render_threads
+    /// the Renderer throws ArgumentError.
+    int threads = 0;
+    /// The reflection model used where the scene leaves [lighting] out (R10);
+    /// the caller decides, per R11, whether that is allowed.
     Reflection fallback_reflection = default_reflection;
     /// The shading model used where the scene leaves it out (as fallback_reflection).
     Shading fallback_shading = default_shading;
@@ -57,23 +62,24 @@ struct PixelProbe {
 /// Whether this CPU runs the given set of per-pixel kernels.
 bool kernel_set_available(RenderOptions::Kernels kernels);
 
-// Holds a scene's prepared geometry (meshes, world-space vertices, normals)
-// so that several frames can be drawn without rebuilding it.
-//
-// Preconditions, checked (never assumed, in any build type): the scene
-// passes check_renderable (litkit/validate.hpp: every value in range and
-// finite, a usable view, an image of 1–16384 pixels each way, in-memory
-// meshes well formed), else SceneError listing every problem; options.threads
-// in 0–max_render_threads, else ArgumentError. Both derive from
-// litkit::Error. The constructor and update() check them; a failed update
-// leaves the renderer drawing the scene it had. The relations between
-// entities (overlaps, objects outside the room) are validate_scene's, which
-// load_scene runs: the renderer does not repeat that (costly) check and
-// draws such a scene as it is.
+/// The CPU renderer. Holds a scene's prepared geometry (meshes, world-space
+/// vertices, normals) so that several frames can be drawn without
+/// rebuilding it.
+///
+/// Preconditions, checked (never assumed, in any build type): the scene
+/// passes check_renderable (litkit/validate.hpp: every value in range and
+/// finite, a usable view, an image of 1–16384 pixels each way, in-memory
+/// meshes well formed), else SceneError listing every problem; options.threads
+/// in 0–max_render_threads, else ArgumentError. Both derive from
+/// litkit::Error. The constructor and update() check them; a failed update
+/// leaves the renderer drawing the scene it had. The relations between
+/// entities (overlaps, objects outside the room) are validate_scene's, which
+/// load_scene runs: the renderer does not repeat that (costly) check and
+/// draws such a scene as it is.
 class Renderer {
 public:
-    // Checks the preconditions, then builds every object's mesh; throws
-    // IoError for an unreadable mesh file.
+    /// Checks the preconditions (SceneError, ArgumentError), then builds every
+    /// object's mesh; throws IoError for an unreadable mesh file.
     explicit Renderer(const Scene& scene, RenderOptions options = {});
     /// Stops the worker threads.
     ~Renderer();
@@ -115,8 +121,8 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// One-shot convenience: Renderer(scene, options).render(), with the same
-// preconditions.
+/// One-shot convenience: Renderer(scene, options).render(), with the same
+/// preconditions and the same errors.
 Image render(const Scene& scene, RenderOptions options = {});
 
 }  // namespace litkit

@@ -1,8 +1,8 @@
 /// \file
 /// A scene as docs/spec.md §5 describes it, and its loading from TOML files.
 /// Units: lengths in the scene's world units, angles in degrees, material and
-/// light colours 0–1 per channel (the scene file's 0–255 / 255), the
-/// background 0–255.
+/// light colours and the background 0–1 per channel (the scene file's 0–255
+/// / 255: from_rgb8).
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -36,11 +36,13 @@ struct Room {
     float depth = 10.0f;
 };
 
-// The single perspective camera (docs/spec.md §1, AB3).
-// The narrowest field of view (docs/reliability.md): below about 1e-7
-// degrees a float's positions are coarser than the pixels.
+/// The narrowest field of view allowed, in degrees (docs/reliability.md):
+/// below about 1e-7 degrees a float's positions are coarser than the pixels
+/// and the picture gets holes; 0.01 keeps a margin of 1000 at the largest image.
 inline constexpr float smallest_fov_degrees = 0.01f;
 
+/// The single perspective camera (docs/spec.md §1, AB3). Positions in world
+/// coordinates, distances in world units.
 struct Observer {
     /// The eye, in world coordinates; inside the room, not inside an object.
     glm::vec3 position{0.0f, 0.0f, 5.0f};
@@ -48,24 +50,29 @@ struct Observer {
     glm::vec3 look_at{0.0f};
     /// Which way is up in the picture; not parallel to the view direction.
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fov_degrees = 45.0f;  // vertical, in [smallest_fov_degrees, 180)
+    /// The vertical field of view in degrees, in [smallest_fov_degrees, 180).
+    float fov_degrees = 45.0f;
+    /// The near clipping distance (> 0, below far).
     float near = 0.05f;
     /// The far clipping distance (> near).
     float far = 1000.0f;
 };
 
+/// The picture: its size, background and gamma (the `[output]` table).
 struct OutputSettings {
     /// Width in pixels, 1–16384.
     int width = 800;
     /// Height in pixels, 1–16384.
     int height = 600;
-    // Linear 0–1 per channel like every colour of the API (lighting.hpp);
-    // each pixel no object covers is to_rgb8(background), without gamma.
-    // A scene file's [r, g, b] of 0–255 is from_rgb8 of it, and comes back
-    // out unchanged. Beware: `background = {10, 20, 30}` compiles (as
-    // 10.0f, ...); renderers refuse it ("background must be 0–1 per
-    // channel"): write from_rgb8({10, 20, 30}).
+    /// The colour of every pixel no object covers, linear 0–1 per channel
+    /// like every colour of the API (Rgb8); such a pixel is
+    /// to_rgb8(background), without gamma. A scene file's [r, g, b] of 0–255
+    /// is from_rgb8 of it, and comes back out unchanged. Beware:
+    /// `background = {10, 20, 30}` compiles (as 10.0f, ...); renderers refuse
+    /// it ("background must be 0–1 per channel"): write from_rgb8({10, 20, 30}).
     glm::vec3 background{0.0f, 0.0f, 0.0f};
+    /// The gamma of docs/spec.md §4.5 (> 0; 1: no correction): a covered
+    /// pixel is round(255 · clamp(I, 0, 1)^(1/gamma)) per channel.
     float gamma = 1.0f;
 };
 
@@ -105,26 +112,36 @@ struct TeapotShape {
 struct MeshFileShape {
     std::filesystem::path file;  ///< already resolved against the scene file's folder
 };
-// A mesh given in memory, for scenes built in code: positions and triangles
-// (counter-clockwise seen from outside), in the object's local coordinates
-// like a mesh file's. Validated like a mesh file (validate_scene and every
-// renderer): every position finite, every index below positions.size(), at
-// least one triangle; file_normals are not used (normals = "file" needs a
-// mesh file). Held by a shared pointer to const, so that copying a scene
-// (Renderer::update keeps one) does not copy the mesh; build it once:
-//     litkit::Mesh mesh;  mesh.positions = {...};  mesh.triangles = {...};
-//     object.shape = litkit::MeshDataShape(std::move(mesh));
-// A scene file cannot hold one: scene_to_toml refuses it (ArgumentError).
+/// A mesh given in memory, for scenes built in code: positions and triangles
+/// (counter-clockwise seen from outside), in the object's local coordinates
+/// like a mesh file's. Validated like a mesh file (validate_scene and every
+/// renderer, with check_mesh_data): every position finite, every index below
+/// positions.size(), at least one triangle; file_normals are not used
+/// (normals = "file" needs a mesh file). Held by a shared pointer to const,
+/// so that copying a scene (Renderer::update keeps one) does not copy the
+/// mesh; build it once:
+///
+///     litkit::Mesh mesh;  mesh.positions = {...};  mesh.triangles = {...};
+///     object.shape = litkit::MeshDataShape(std::move(mesh));
+///
+/// A scene file cannot hold one: scene_to_toml refuses it (ArgumentError).
 struct MeshDataShape {
+    /// The mesh, shared and immutable. Null only in a default-constructed
+    /// MeshDataShape, which validation refuses ("the MeshDataShape holds no mesh").
     std::shared_ptr<const Mesh> mesh;
+    /// No mesh (null): give one before the scene is validated or drawn.
     MeshDataShape() = default;
+    /// Takes `data` over (move it in to avoid a copy); it is checked later,
+    /// with the scene, not here.
     explicit MeshDataShape(Mesh data) : mesh(std::make_shared<const Mesh>(std::move(data))) {}
 };
+/// What an object is made of: one of the built-in shapes, a mesh file or a
+/// mesh in memory.
 using Shape =
     std::variant<CubeShape, SphereShape, TorusShape, TeapotShape, MeshFileShape, MeshDataShape>;
 
-// The scene-file name of a shape type: "cube", "sphere", "torus", "teapot",
-// "mesh"; "mesh data" for a MeshDataShape (which no scene file holds).
+/// The scene-file name of a shape type: "cube", "sphere", "torus", "teapot",
+/// "mesh"; "mesh data" for a MeshDataShape (which no scene file holds).
 std::string_view shape_type_name(const Shape& shape);
 
 /// A light of the scene with its name.
@@ -220,13 +237,13 @@ Scene load_scene(std::span<const std::filesystem::path> files, const LoadOptions
 /// folder resolves relative mesh paths. Throws as load_scene does.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& source_name);
 
-// The scene as one TOML file that `load_scene` reads back as the same scene
-// (every value, colours as their 0-255 integers, every key written out).
-// Mesh paths are written relative to the folder of `written_as` where they
-// can be, else absolute. Comments of the original files are not kept.
-// Throws ArgumentError for an object with a MeshDataShape: a scene file
-// names its meshes by file, so write the mesh as an OBJ file (mesh_to_obj)
-// and use a MeshFileShape.
+/// The scene as one TOML file that `load_scene` reads back as the same scene
+/// (every value, colours as their 0-255 integers, every key written out).
+/// Mesh paths are written relative to the folder of `written_as` where they
+/// can be, else absolute. Comments of the original files are not kept.
+/// Throws ArgumentError for an object with a MeshDataShape: a scene file
+/// names its meshes by file, so write the mesh as an OBJ file (mesh_to_obj)
+/// and use a MeshFileShape.
 std::string scene_to_toml(const Scene& scene, const std::filesystem::path& written_as = {});
 
 /// The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
@@ -236,18 +253,19 @@ std::string_view default_scene_toml();
 /// The built-in default scene, loaded.
 Scene default_scene();
 
-// True when the two objects have the same mesh in the same place: the same
-// shape with the same parameters, position, rotation and scale (what a
-// renderer's update can keep). Two MeshDataShapes are the same when they
-// share one Mesh or hold equal positions and triangles.
+/// True when the two objects have the same mesh in the same place: the same
+/// shape with the same parameters, position, rotation and scale (what a
+/// renderer's update can keep). Two MeshDataShapes are the same when they
+/// share one Mesh or hold equal positions and triangles.
 bool same_geometry(const SceneObject& a, const SceneObject& b);
 
 /// world = T(position) · Rz · Ry · Rx · S(scale) (docs/spec.md §2).
 glm::mat4 object_to_world(const SceneObject& object);
 
-// The object's mesh in local coordinates (builds the shape, reads the file
-// or copies the in-memory mesh). Throws ArgumentError for a MeshDataShape
-// that check_mesh_data refuses.
+/// The object's mesh in local coordinates (builds the shape, reads the file
+/// or copies the in-memory mesh's positions and triangles). Throws as
+/// load_obj does for a mesh file, and ArgumentError for a MeshDataShape that
+/// holds no mesh or one that check_mesh_data refuses.
 Mesh object_mesh(const SceneObject& object);
 
 /// An object's triangles in world space, as every backend draws them:
