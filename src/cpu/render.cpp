@@ -337,10 +337,15 @@ void Renderer::Impl::prepare() {
 void Renderer::Impl::vertex_stage(int width, int height) {
     const Observer& observer = scene.observer;
     const glm::vec3 eye = observer.position;
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    // The projection in double, rounded once to float: float tanf rounds
+    // differently in glibc and in the WebAssembly build's C library (for a
+    // fov of 32 degrees, enough to move a pixel), double tan rounded to
+    // float does not, so every build draws the same bytes (docs/web.md).
+    const glm::mat4 projection(glm::perspective(glm::radians(double(observer.fov_degrees)),
+                                                double(width) / double(height),
+                                                double(observer.near), double(observer.far)));
     const glm::mat4 view_projection =
-        glm::perspective(glm::radians(observer.fov_degrees), aspect, observer.near, observer.far) *
-        glm::lookAt(observer.position, observer.look_at, observer.up);
+        projection * glm::lookAt(observer.position, observer.look_at, observer.up);
 
     constexpr std::size_t chunk = 4096;
     for (std::size_t o = 0; o < objects.size(); ++o) {
