@@ -44,22 +44,24 @@ struct Shaders {
 /// most `light_capacity` (≥ 1) lights.
 Shaders generate(Reflection reflection, Shading shading, int light_capacity);
 
-// The program drawing objects with this reflection × shading model under
-// exactly these lights, as the OpenGL backend draws: shade() has one block
-// per light, of its kind, in the given order, instead of a loop over
-// u_light_count lights of any kind (which it does not read). The uniforms
-// are the same, so the lights' values (radiance, position, direction, ...)
-// can change without a new program; their number and kinds cannot. Light
-// values given here are not used. Likewise `gamma`: only whether it is 1
-// matters; a program for gamma 1 leaves the power out (u_inv_gamma unused).
+/// The program drawing objects with this reflection × shading model under
+/// exactly these lights, as the OpenGL backend draws: shade() has one block
+/// per light, of its kind, in the given order, instead of a loop over
+/// u_light_count lights of any kind (which it does not read). The uniforms
+/// are the same, so the lights' values (radiance, position, direction, ...)
+/// can change without a new program; their number and kinds cannot. Light
+/// values given here are not used. Likewise `gamma`: only whether it is 1
+/// matters; a program for gamma 1 leaves the power out (u_inv_gamma unused).
 Shaders generate(Reflection reflection, Shading shading, std::span<const Light> lights,
                  float gamma);
 
-// What the OpenGL backend and the program of `litkit export --format cpp`
-// draw with: the program specialised to the lights up to this many lights,
-// the general one (sized for them) beyond, where one block per light would
-// make a long shader to compile for little gain.
+/// What the OpenGL backend and the program of `litkit export --format cpp`
+/// draw with: the program specialised to the lights up to this many lights,
+/// the general one (sized for them) beyond, where one block per light would
+/// make a long shader to compile for little gain.
 inline constexpr std::size_t max_specialised_lights = 16;
+/// generate(reflection, shading, lights, gamma) for up to
+/// max_specialised_lights lights, else the general program sized for them.
 Shaders generate_for_scene(Reflection reflection, Shading shading, std::span<const Light> lights,
                            float gamma);
 

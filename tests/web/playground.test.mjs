@@ -111,14 +111,10 @@ try {
     expectSame(await canvasPixels(page, "picture"), litkitRender(litkit, text), "teapot.toml");
   });
 
-  // Every example under its own models. normals.toml is left out, and said
-  // so: it differs in a few pixels through the C library's float functions
-  // (glibc's against musl's tanf and atan2f; docs/web.md, "Limits").
-  const knownDifferent = ["normals.toml"];
-  await check("every other example equals `litkit render` of it", async () => {
+  // Every example under its own models.
+  await check("every example equals `litkit render` of it", async () => {
     const failures = [];
     for (const name of fs.readdirSync(examples).filter((n) => n.endsWith(".toml")).sort()) {
-      if (knownDifferent.includes(name)) continue;
       await choose("#example", name);
       const d = difference(await canvasPixels(page, "picture"),
                            litkitRender(litkit, await editorText(), [], exampleMeshes));
@@ -126,7 +122,6 @@ try {
     }
     expect(failures.length === 0, failures.join("; "));
   });
-  console.log(`note examples not compared: ${knownDifferent.join(", ")} (docs/web.md, Limits)`);
 
   for (const [reflection, shading, example] of [["blinn-phong", "gouraud", "reflection-models.toml"],
                                                  ["cook-torrance", "flat", "teapot.toml"],
