@@ -80,7 +80,7 @@ TEST(Preconditions, NanOrInfiniteCameraIsRefused) {
     EXPECT_NE(render_error(scene).find("observer: look_at must be finite"), std::string::npos);
     scene = litkit::default_scene();
     scene.observer.fov_degrees = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_NE(render_error(scene).find("fov must be in (0, 180)"), std::string::npos);
+    EXPECT_NE(render_error(scene).find("fov must be in [0.01, 180)"), std::string::npos);
 }
 
 TEST(Preconditions, ImageSizeOutOfRangeIsRefused) {

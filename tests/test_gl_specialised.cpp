@@ -40,7 +40,7 @@ litkit::Scene scene_with(const std::vector<litkit::Light>& lights, Reflection re
     litkit::Scene scene;
     scene.output.width = 160;
     scene.output.height = 120;
-    scene.output.background = {20, 30, 40};
+    scene.output.background = litkit::from_rgb8({20, 30, 40});
     scene.observer.position = {0.0f, 1.0f, 4.0f};
     scene.reflection = reflection;
     scene.shading = shading;
