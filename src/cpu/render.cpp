@@ -180,8 +180,13 @@ const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
                             " kernel set");
     switch (set) {
         case RenderOptions::Kernels::Portable: return kernels::portable_kernels;
+#if defined(__x86_64__) || defined(__i386__)  // the other sets exist on x86 only
         case RenderOptions::Kernels::Avx2: return kernels::avx2_kernels;
         case RenderOptions::Kernels::Avx512: return kernels::avx512_kernels;
+#else
+        case RenderOptions::Kernels::Avx2:
+        case RenderOptions::Kernels::Avx512: break;  // refused above
+#endif
         case RenderOptions::Kernels::Best: break;
     }
     return kernels::select_kernels();

@@ -25,8 +25,10 @@ bool cpu_has_avx512() {
 }
 
 const Kernels& select_kernels() {
+#if defined(__x86_64__) || defined(__i386__)  // the SIMD sets are built for x86 only
     if (cpu_has_avx512()) return avx512_kernels;
     if (cpu_has_avx2()) return avx2_kernels;
+#endif
     return portable_kernels;
 }
 
