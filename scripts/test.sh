@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds litkit and runs every test. With --sanitize, builds a separate tree
+# Builds litkit and runs every test (the C++ and Python suites through ctest,
+# then the web playground's in headless Chromium). With --sanitize, builds a separate tree
 # under AddressSanitizer and UBSan and runs the suite there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,4 +21,7 @@ else
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
   cmake --build "$build" -j "$jobs"
   ctest --test-dir "$build" --output-on-failure -j "$jobs"
+  # The playground page in headless Chromium against this build's litkit
+  # (docs/web.md): builds the WebAssembly site first.
+  ./scripts/test-web.sh
 fi
