@@ -127,6 +127,11 @@ constexpr int band_height = 16;
 constexpr std::size_t short_span = 8;
 constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
 
+// Window coordinates in fixed point stay below this (the guard band keeps
+// them within 3 image sizes of 16384 pixels, far less), so that edge
+// functions never overflow.
+constexpr double largest_fixed_coordinate = 0x1p30;
+
 // Nearest integer, halves up; |v| stays far below 2^31 thanks to the guard
 // band. (std::llround is a library call; this is two instructions.)
 std::int32_t round_to_int(double v) {
@@ -398,8 +403,17 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
             // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
             const double window_x = (c.x * inverse_w + 1.0f) * half_width;
             const double window_y = (1.0f - c.y * inverse_w) * half_height;
-            raster.x[m] = round_to_int(window_x * subpixel_one);
-            raster.y[m] = round_to_int(window_y * subpixel_one);
+            // The guard band keeps every corner within a few image sizes of
+            // the picture; only degenerate input (coordinates near a float's
+            // limit, where clipping loses all precision) can leave it, and
+            // such a piece is dropped rather than turned into an integer
+            // that overflows.
+            const double fixed_x = window_x * subpixel_one, fixed_y = window_y * subpixel_one;
+            if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
+                  std::abs(fixed_y) < largest_fixed_coordinate))
+                return;
+            raster.x[m] = round_to_int(fixed_x);
+            raster.y[m] = round_to_int(fixed_y);
             raster.inverse_w[m] = inverse_w;
         }
         // Doubled signed area in y-down window coordinates: a triangle
