@@ -216,8 +216,7 @@ struct Peer {
 
     explicit Peer(const litkit::Scene& scene)
         : width(scene.output.width), height(scene.output.height),
-          background(glm::vec3(scene.output.background[0], scene.output.background[1],
-                               scene.output.background[2]) / 255.0f) {
+          background(scene.output.background) {  // 0-1 per channel, as every colour
         std::vector<litkit::Light> scene_lights;
         for (const litkit::SceneLight& light : scene.lights) scene_lights.push_back(light.light);
         const std::vector<peer::PeerLight> lights = peer::peer_lights(scene_lights);
