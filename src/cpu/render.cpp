@@ -29,6 +29,7 @@
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <utility>
 #include <vector>
 
 #include "litkit/equations.hpp"
@@ -825,13 +826,13 @@ void Renderer::update(const Scene& new_scene) {
     check_renderable(new_scene);  // before anything of the old scene is replaced
     Impl& impl = *impl_;
     const float length_scale = float_safe_length_scale(new_scene);
-    const Scene scene = scale_lengths(new_scene, length_scale);
+    Scene scene = scale_lengths(new_scene, length_scale);
     bool same = scene.objects.size() == impl.scene.objects.size();
     for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
         same = same_geometry(scene.objects[o], impl.scene.objects[o]) &&
                normal_options(scene, scene.objects[o]) ==
                    normal_options(impl.scene, impl.scene.objects[o]);
-    impl.scene = scene;
+    impl.scene = std::move(scene);  // one copy of the scene per update, as before
     impl.length_scale = length_scale;
     if (same) {
         impl.prepare_surfaces();
