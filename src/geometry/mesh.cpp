@@ -493,7 +493,7 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
                                     std::to_string(crease_angle_degrees) +
                                     " is outside (0, 180] degrees");
     }
-    const CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
+    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
     const std::size_t triangle_count = mesh.triangles.size();
 
     const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
@@ -530,13 +530,6 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
     }
 
     CreasedNormals result;
-    result.position_normals.resize(position_count);
-    result.may_split.resize(position_count);
-    for (std::size_t p = 0; p < position_count; ++p) {
-        const std::uint32_t vertex = corners.vertex_of_position[p];
-        result.position_normals[p] = vertex_normal[vertex];
-        result.may_split[p] = pairwise[vertex];
-    }
 
     // The corners at the other vertices, in corner order; an unusable
     // triangle (a sliver between welded corners) takes its corners'
@@ -552,7 +545,13 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
         }
     }
     std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
-    if (first_corner.back() == 0) return result;
+    const auto finish = [&] {
+        result.vertex_of_position = std::move(corners.vertex_of_position);
+        result.vertex_normals = std::move(vertex_normal);
+        result.may_split = std::move(pairwise);
+        return std::move(result);
+    };
+    if (first_corner.back() == 0) return finish();
 
     // The usable ones grouped by vertex (a counting sort, keeping triangle
     // order), each as its place in split_corners.
@@ -583,7 +582,7 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
             result.split_normals[corners_at_vertex[own]] = normalized_or_zero(part);
         }
     }
-    return result;
+    return finish();
 }
 
 std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
@@ -591,7 +590,7 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
     const CreasedNormals creased = creased_normals(mesh, weighting, crease_angle_degrees);
     std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) normals[3 * t + k] = creased.position_normals[mesh.triangles[t][k]];
+        for (int k = 0; k < 3; ++k) normals[3 * t + k] = creased.position_normal(mesh.triangles[t][k]);
     for (std::size_t at = 0; at < creased.split_corners.size(); ++at)
         normals[creased.split_corners[at]] = creased.split_normals[at];
     return normals;

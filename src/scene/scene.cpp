@@ -163,7 +163,7 @@ void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm
     normals.assign(mesh.positions.size(), glm::vec3(0.0f));
     for (const auto& triangle : mesh.triangles)  // positions no triangle uses stay zero
         for (const std::uint32_t corner : triangle)
-            if (!creased.may_split[corner]) normals[corner] = creased.position_normals[corner];
+            if (!creased.position_may_split(corner)) normals[corner] = creased.position_normal(corner);
     CornerSplitter splitter(mesh, normals);
     for (std::size_t at = 0; at < creased.split_corners.size(); ++at) {
         const std::uint32_t corner = creased.split_corners[at];
