@@ -31,6 +31,7 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
+#include "heap.hpp"
 #include "usage.hpp"
 #include "viewer/viewer.hpp"
 #include "litkit/validate.hpp"
@@ -657,6 +658,7 @@ int run_init(const std::string& file, bool force) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    litkit_cli::use_large_pages_for_the_heap();
     CLI::App app{"litkit: renders a lit, shaded 3D scene from a scene file"};
     app.set_version_flag("--version", std::string("litkit ") + LITKIT_VERSION);
     app.require_subcommand(1);
