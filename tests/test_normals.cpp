@@ -3,6 +3,7 @@
 // out by hand in the comment above its check.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/corner_angle.hpp"  // internal (src/)
 #include "litkit/error.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/render.hpp"
@@ -162,6 +164,34 @@ TEST(NormalWeighting, EachWeightingOnTwoHandMadeTriangles) {
         expect_near(normals[1], {0, 0, 1});
         expect_near(normals[4], {1, 0, 0});
     }
+}
+
+// corner_angle is std::atan2 for y > 0, written with + − × ÷ (the same bits
+// in every build). Against glibc's atan2 (within a few units in the last
+// place, of π) on a grid over every branch: steep and shallow, x of either
+// sign, each quarter's neighbourhood, and the ends (x = 0, y ≪ |x|, y = |x|).
+TEST(NormalWeighting, CornerAngleIsAtan2) {
+    double worst = 0.0;
+    std::uint32_t state = 12345;
+    auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<double>(state >> 8) / 16777216.0;  // [0, 1)
+    };
+    std::vector<std::array<double, 2>> cases = {
+        {1.0, 0.0}, {1.0, 1.0}, {1.0, -1.0}, {1e-30, 1.0}, {1e-30, -1.0}, {1.0, 1e-30},
+        {3.0, 4.0}, {4.0, -3.0}, {0.25, 1.0}, {0.125, 1.0}, {0.375, -1.0}, {1e30, 3e29}};
+    for (int i = 0; i < 200000; ++i) {
+        const double scale = std::ldexp(1.0, static_cast<int>(next() * 40.0) - 20);
+        cases.push_back({(next() + 1e-9) * scale, (2.0 * next() - 1.0) * scale});
+    }
+    for (const auto& [y, x] : cases) {
+        const double difference = std::abs(litkit::corner_angle(y, x) - std::atan2(y, x));
+        worst = std::max(worst, difference);
+        ASSERT_LE(difference, 2e-15) << "y " << y << " x " << x;
+    }
+    EXPECT_GT(worst, 0.0);  // not std::atan2 itself
+    EXPECT_EQ(litkit::corner_angle(1.0, 0.0), std::numbers::pi / 2);
+    EXPECT_EQ(litkit::corner_angle(1.0, 1.0), std::numbers::pi / 4);
 }
 
 TEST(NormalWeighting, WeldingJoinsPositionsCloserThanTheWeldDistance) {

@@ -1,5 +1,6 @@
 #include "litkit/mesh.hpp"
 #include "litkit/error.hpp"
+#include "geometry/corner_angle.hpp"
 #include "geometry/creased_normals.hpp"
 
 #include <algorithm>
@@ -396,13 +397,11 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
         case Normals::Angle: {
             // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
             // π minus those (a triangle's angles sum to π), one call fewer.
-            // In double: float atan2f differs between C libraries in the last
-            // bit (glibc, and the WebAssembly build's musl), double rounded
-            // to float does not, so every build finds the same normals.
+            // corner_angle, not std::atan2: the same bits in every build.
             const double angle0 =
-                std::atan2(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
+                corner_angle(length, glm::dot(corners[1] - corners[0], corners[2] - corners[0]));
             const double angle1 =
-                std::atan2(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
+                corner_angle(length, glm::dot(corners[2] - corners[1], corners[0] - corners[1]));
             const double angle2 = std::max(0.0, std::numbers::pi - angle0 - angle1);
             out[0] = glm::vec3(angle0 * unit);
             out[1] = glm::vec3(angle1 * unit);
