@@ -368,7 +368,7 @@ struct CornerWeights {
     std::vector<std::uint32_t> vertex_of_position;  // the welded vertex of each position
     std::vector<glm::vec3> weights;
     std::vector<bool> usable;  // per triangle
-    std::vector<glm::vec3> unit_normals;  // DD8 per triangle, when asked for
+    std::vector<glm::vec3> unit_normals;  // DD8 per triangle
 };
 
 // The weighted normals of triangle (a, b, c) at its corners; false for a
@@ -419,37 +419,54 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
     return true;
 }
 
-CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function,
-                             bool with_unit_normals) {
+// The checks every weighting starts with, then the welded vertex of each
+// position.
+std::vector<std::uint32_t> welded_vertices(const Mesh& mesh, Normals weighting,
+                                           const char* function) {
     if (weighting == Normals::File) {
         throw std::invalid_argument(std::string(function) +
                                     ": \"file\" normals come from the mesh file, not from "
                                     "weighting faces");
     }
     check_triangle_indices(mesh, function);
-    CornerWeights result;
-    result.vertex_of_position = weld(mesh.positions);
-    result.weights.resize(mesh.triangles.size() * 3);
-    result.usable.resize(mesh.triangles.size());
-    if (with_unit_normals) result.unit_normals.resize(mesh.triangles.size());
+    return weld(mesh.positions);
+}
+
+// Calls visit(t, weights, unit_normal) for each triangle t that takes part,
+// in order, with its corners' weighted normals.
+template <class Visit>
+void for_each_weighted_triangle(const Mesh& mesh, Normals weighting,
+                                const std::vector<std::uint32_t>& vertex_of_position,
+                                Visit&& visit) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& triangle = mesh.triangles[t];
-        const std::uint32_t vertex_a = result.vertex_of_position[triangle[0]];
-        const std::uint32_t vertex_b = result.vertex_of_position[triangle[1]];
-        const std::uint32_t vertex_c = result.vertex_of_position[triangle[2]];
-        glm::vec3* out = &result.weights[3 * t];
+        const std::uint32_t vertex_a = vertex_of_position[triangle[0]];
+        const std::uint32_t vertex_b = vertex_of_position[triangle[1]];
+        const std::uint32_t vertex_c = vertex_of_position[triangle[2]];
         // Two corners welded into one vertex make the triangle zero-area in
         // the welded mesh, whatever its tiny area before welding.
-        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) {
-            out[0] = out[1] = out[2] = glm::vec3(0.0f);
-            continue;
-        }
+        if (vertex_a == vertex_b || vertex_b == vertex_c || vertex_c == vertex_a) continue;
+        glm::vec3 weights[3];
         glm::vec3 unit_normal;
-        result.usable[t] = triangle_weights(weighting, mesh.positions[triangle[0]],
-                                            mesh.positions[triangle[1]],
-                                            mesh.positions[triangle[2]], out, unit_normal);
-        if (!result.unit_normals.empty()) result.unit_normals[t] = unit_normal;
+        if (triangle_weights(weighting, mesh.positions[triangle[0]], mesh.positions[triangle[1]],
+                             mesh.positions[triangle[2]], weights, unit_normal))
+            visit(t, weights, unit_normal);
     }
+}
+
+CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function) {
+    CornerWeights result;
+    result.vertex_of_position = welded_vertices(mesh, weighting, function);
+    result.weights.resize(mesh.triangles.size() * 3);
+    result.usable.resize(mesh.triangles.size());
+    result.unit_normals.resize(mesh.triangles.size());
+    for_each_weighted_triangle(
+        mesh, weighting, result.vertex_of_position,
+        [&](std::size_t t, const glm::vec3* weights, const glm::vec3& unit_normal) {
+            result.usable[t] = true;
+            result.unit_normals[t] = unit_normal;
+            for (int k = 0; k < 3; ++k) result.weights[3 * t + k] = weights[k];
+        });
     return result;
 }
 
@@ -465,23 +482,25 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
 }
 
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting) {
-    const CornerWeights corners = corner_weights(mesh, weighting, "vertex_normals", false);
+    const std::vector<std::uint32_t> vertex_of_position =
+        welded_vertices(mesh, weighting, "vertex_normals");
     const std::size_t position_count = mesh.positions.size();
 
     // Summing the weighted normals and normalising gives the direction of
     // their weighted mean (DD9, docs/spec.md §9.2), whatever the count.
+    // Summed as they come: no per-corner array (9 MB of fresh memory for
+    // 261k triangles).
     std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        if (!corners.usable[t]) continue;
-        for (int k = 0; k < 3; ++k) {
-            normal_sums[corners.vertex_of_position[mesh.triangles[t][k]]] +=
-                corners.weights[3 * t + k];
-        }
-    }
+    for_each_weighted_triangle(
+        mesh, weighting, vertex_of_position,
+        [&](std::size_t t, const glm::vec3* weights, const glm::vec3&) {
+            for (int k = 0; k < 3; ++k)
+                normal_sums[vertex_of_position[mesh.triangles[t][k]]] += weights[k];
+        });
 
     std::vector<glm::vec3> normals(position_count, glm::vec3(0.0f));
     for (std::size_t index = 0; index < position_count; ++index) {
-        normals[index] = normalized_or_zero(normal_sums[corners.vertex_of_position[index]]);
+        normals[index] = normalized_or_zero(normal_sums[vertex_of_position[index]]);
     }
     return normals;
 }
@@ -492,7 +511,7 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
                                     std::to_string(crease_angle_degrees) +
                                     " is outside (0, 180] degrees");
     }
-    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals", true);
+    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals");
     const std::size_t triangle_count = mesh.triangles.size();
 
     const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
