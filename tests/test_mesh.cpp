@@ -190,12 +190,14 @@ TEST(VertexNormals, WeldingIsTransitiveAlongAChainOfClosePositions) {
 }
 
 TEST(VertexNormals, WeldingFindsNeighboursAcrossAnyGridCellBorder) {
-    // 3000 pairs of small triangles scattered over the unit cube, each pair
+    // 20000 pairs of small triangles scattered over the unit cube, each pair
     // meeting at two positions 0.5 weld distances apart in a random
-    // direction, and 3000 more pairs whose positions are 1.5 weld distances
+    // direction, and 20000 more pairs whose positions are 1.5 weld distances
     // apart. Wherever the grid of a spatial search puts its cell borders,
-    // many pairs straddle them: every close pair must weld (normal of the
-    // two faces' mean) and no distant pair may (each keeps its own normal).
+    // some pairs straddle them (with cells of 1024 weld distances, five of
+    // the close pairs: leaving out the search across borders fails this
+    // test): every close pair must weld (normal of the two faces' mean) and
+    // no distant pair may (each keeps its own normal).
     std::mt19937 random(20240611u);
     std::uniform_real_distribution<float> coordinate(0.01f, 0.99f);
     std::normal_distribution<float> gaussian(0.0f, 1.0f);
@@ -213,7 +215,7 @@ TEST(VertexNormals, WeldingFindsNeighboursAcrossAnyGridCellBorder) {
         bool close;
     };
     std::vector<Pair> pairs;
-    for (int pair = 0; pair < 6000; ++pair) {
+    for (int pair = 0; pair < 40000; ++pair) {
         const bool close = pair % 2 == 0;
         const glm::vec3 corner{coordinate(random), coordinate(random), coordinate(random)};
         const glm::vec3 direction =
