@@ -108,9 +108,17 @@ void sort_by_cell(std::vector<GridPoint>& points, int key_bits) {
     constexpr std::size_t bucket_count = std::size_t{1} << radix_bits;
     constexpr std::uint64_t digit_mask = bucket_count - 1;
     if (key_bits == 0) return;
+    // A small mesh (a cube, a quad) costs a comparison sort less than
+    // clearing the count table twice.
+    if (points.size() < bucket_count / 4) {
+        std::stable_sort(points.begin(), points.end(),
+                         [](const GridPoint& a, const GridPoint& b) { return a.cell < b.cell; });
+        return;
+    }
     std::vector<GridPoint> sorted(points.size());
+    std::vector<std::size_t> bucket_start(bucket_count);
     for (int shift = 0; shift < key_bits; shift += radix_bits) {
-        std::array<std::size_t, bucket_count> bucket_start{};
+        std::fill(bucket_start.begin(), bucket_start.end(), std::size_t{0});
         for (const GridPoint& point : points) ++bucket_start[(point.cell >> shift) & digit_mask];
         std::size_t start = 0;
         for (std::size_t& bucket : bucket_start) start += std::exchange(bucket, start);
