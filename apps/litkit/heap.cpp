@@ -13,6 +13,12 @@ namespace litkit_cli {
 
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
 
+#ifdef MADV_COLLAPSE
+constexpr int madv_collapse = MADV_COLLAPSE;
+#else
+constexpr int madv_collapse = 25;  // Linux's value; glibc 2.36's headers lack the name
+#endif
+
 void use_large_pages_for_the_heap() {
     constexpr std::uintptr_t huge_page = std::uintptr_t{2} << 20;
     // Virtual address space only: pages are touched (and counted) as used.
@@ -29,18 +35,30 @@ void use_large_pages_for_the_heap() {
     // Grow the heap by the whole reserve at once.
     mallopt(M_TOP_PAD, static_cast<int>(reserve));
 
-    const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
-    // A block larger than any free space left at the top forces the growth;
-    // freeing it leaves the reserve as the heap's free top.
-    // (volatile: a malloc whose block is freed unused may be left out.)
-    void* volatile block = std::malloc(std::size_t{1} << 20);
+    // The heap's end moved up to a 2 MiB boundary, so that the growth below
+    // starts on one: glibc takes a moved break as another user's memory and
+    // starts its new top there. Otherwise up to 2 MiB at the start of the
+    // growth (where the first large blocks go) would stay in small pages.
+    const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));
+    const std::uintptr_t begin = (end + huge_page - 1) & ~(huge_page - 1);
+    const bool aligned =
+        begin == end || sbrk(static_cast<std::intptr_t>(begin - end)) != reinterpret_cast<void*>(-1);
+    // A block larger than the free space left in the heap (a few hundred
+    // KiB at start-up) forces the growth; freeing it leaves the reserve as
+    // the heap's free top. Its size keeps both headers malloc writes (the
+    // block's and the top's after it) in the first 2 MiB, the only range
+    // touched before the advice. (volatile: a malloc whose block is freed
+    // unused may be left out.)
+    void* volatile block = std::malloc(huge_page - 64);
     std::free(block);
     const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
-    // From the next 2 MiB boundary: the pages below it already hold data.
-    const std::uintptr_t begin = (before + huge_page - 1) & ~(huge_page - 1);
-    if (after > begin) {
+    if (aligned && after > begin) {
         // A refusal (THP disabled, an old kernel) changes nothing.
         madvise(reinterpret_cast<void*>(begin), after - begin, MADV_HUGEPAGE);
+        // That first range already has a small page (the headers), so a
+        // fault there would not bring a huge page: collapse it into one
+        // (Linux 6.1 and later; refused harmlessly before).
+        madvise(reinterpret_cast<void*>(begin), huge_page, madv_collapse);
     }
     mallopt(M_TOP_PAD, 128 << 10);  // glibc's default again for later growth
 }
