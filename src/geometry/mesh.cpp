@@ -375,13 +375,6 @@ void check_triangle_indices(const Mesh& mesh, const char* function) {
 
 // Each triangle's part in the normal of each of its corners (entry 3·t + k),
 // with the weights of docs/spec.md §9.2, and whether it takes part at all.
-struct CornerWeights {
-    std::vector<std::uint32_t> vertex_of_position;  // the welded vertex of each position
-    std::vector<glm::vec3> weights;
-    std::vector<bool> usable;  // per triangle
-    std::vector<glm::vec3> unit_normals;  // DD8 per triangle
-};
-
 // The weighted normals of triangle (a, b, c) at its corners; false for a
 // triangle that takes no part (zero area, which includes a zero-length
 // edge, or non-finite).
@@ -465,22 +458,6 @@ void for_each_weighted_triangle(const Mesh& mesh, Normals weighting,
     }
 }
 
-CornerWeights corner_weights(const Mesh& mesh, Normals weighting, const char* function) {
-    CornerWeights result;
-    result.vertex_of_position = welded_vertices(mesh, weighting, function);
-    result.weights.resize(mesh.triangles.size() * 3);
-    result.usable.resize(mesh.triangles.size());
-    result.unit_normals.resize(mesh.triangles.size());
-    for_each_weighted_triangle(
-        mesh, weighting, result.vertex_of_position,
-        [&](std::size_t t, const glm::vec3* weights, const glm::vec3& unit_normal) {
-            result.usable[t] = true;
-            result.unit_normals[t] = unit_normal;
-            for (int k = 0; k < 3; ++k) result.weights[3 * t + k] = weights[k];
-        });
-    return result;
-}
-
 glm::vec3 normalized_or_zero(const glm::vec3& sum) {
     const float length = glm::length(sum);
     return length > 0.0f ? sum / length : glm::vec3(0.0f);
@@ -522,20 +499,26 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
                                     std::to_string(crease_angle_degrees) +
                                     " is outside (0, 180] degrees");
     }
-    CornerWeights corners = corner_weights(mesh, weighting, "corner_normals");
+    std::vector<std::uint32_t> vertex_of_position =
+        welded_vertices(mesh, weighting, "corner_normals");
     const std::size_t triangle_count = mesh.triangles.size();
-
-    const std::vector<glm::vec3>& unit_normals = corners.unit_normals;
     const std::size_t position_count = mesh.positions.size();
 
-    // Vertex normals, summed exactly as vertex_normals sums them.
+    // Vertex normals, summed exactly as vertex_normals sums them, and each
+    // usable triangle's DD8 normal. The corners' weights are not kept (9 MB
+    // for 261k triangles): the few corners that need them again, at the
+    // vertices compared pairwise, compute them again below.
     std::vector<glm::vec3> vertex_normal(position_count, glm::vec3(0.0f));
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        if (!corners.usable[t]) continue;
-        for (int k = 0; k < 3; ++k)
-            vertex_normal[corners.vertex_of_position[mesh.triangles[t][k]]] +=
-                corners.weights[3 * t + k];
-    }
+    std::vector<glm::vec3> unit_normals(triangle_count);
+    std::vector<std::uint8_t> usable(triangle_count, 0);
+    for_each_weighted_triangle(
+        mesh, weighting, vertex_of_position,
+        [&](std::size_t t, const glm::vec3* weights, const glm::vec3& unit_normal) {
+            usable[t] = 1;
+            unit_normals[t] = unit_normal;
+            for (int k = 0; k < 3; ++k)
+                vertex_normal[vertex_of_position[mesh.triangles[t][k]]] += weights[k];
+        });
     for (glm::vec3& normal : vertex_normal) normal = normalized_or_zero(normal);
 
     const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
@@ -548,9 +531,9 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
     const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
     std::vector<std::uint8_t> pairwise(position_count, 0);
     for (std::size_t t = 0; t < triangle_count; ++t) {
-        if (!corners.usable[t]) continue;
+        if (!usable[t]) continue;
         for (const std::uint32_t position : mesh.triangles[t]) {
-            const std::uint32_t vertex = corners.vertex_of_position[position];
+            const std::uint32_t vertex = vertex_of_position[position];
             const glm::vec3& centre = vertex_normal[vertex];
             if (centre == glm::vec3(0.0f) ||
                 !(double(glm::dot(centre, unit_normals[t])) > half_limit))
@@ -566,16 +549,16 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
     std::vector<std::uint32_t> first_corner(position_count + 1, 0);
     for (std::size_t t = 0; t < triangle_count; ++t) {
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t vertex = corners.vertex_of_position[mesh.triangles[t][k]];
+            const std::uint32_t vertex = vertex_of_position[mesh.triangles[t][k]];
             if (!pairwise[vertex]) continue;
             result.split_corners.push_back(static_cast<std::uint32_t>(3 * t + k));
             result.split_normals.push_back(vertex_normal[vertex]);
-            if (corners.usable[t]) ++first_corner[vertex + 1];
+            if (usable[t]) ++first_corner[vertex + 1];
         }
     }
     std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
     const auto finish = [&] {
-        result.vertex_of_position = std::move(corners.vertex_of_position);
+        result.vertex_of_position = std::move(vertex_of_position);
         result.vertex_normals = std::move(vertex_normal);
         result.may_split = std::move(pairwise);
         return std::move(result);
@@ -589,11 +572,23 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
         std::vector<std::uint32_t> next(first_corner.begin(), first_corner.end() - 1);
         for (std::uint32_t at = 0; at < result.split_corners.size(); ++at) {
             const std::uint32_t corner = result.split_corners[at];
-            if (!corners.usable[corner / 3]) continue;
+            if (!usable[corner / 3]) continue;
             const std::uint32_t vertex =
-                corners.vertex_of_position[mesh.triangles[corner / 3][corner % 3]];
+                vertex_of_position[mesh.triangles[corner / 3][corner % 3]];
             corners_at_vertex[next[vertex]++] = at;
         }
+    }
+    // Their weights, computed as the sums above computed them.
+    std::vector<glm::vec3> split_weights(result.split_corners.size());
+    for (std::uint32_t at = 0; at < result.split_corners.size(); ++at) {
+        const std::uint32_t corner = result.split_corners[at];
+        const auto& triangle = mesh.triangles[corner / 3];
+        if (!usable[corner / 3]) continue;
+        glm::vec3 weights[3];
+        glm::vec3 unit_normal;
+        triangle_weights(weighting, mesh.positions[triangle[0]], mesh.positions[triangle[1]],
+                         mesh.positions[triangle[2]], weights, unit_normal);
+        split_weights[at] = weights[corner % 3];
     }
     for (std::size_t vertex = 0; vertex < position_count; ++vertex) {
         const std::uint32_t begin = first_corner[vertex], end = first_corner[vertex + 1];
@@ -606,7 +601,7 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
                 const std::uint32_t corner = result.split_corners[corners_at_vertex[at]];
                 const std::uint32_t g = corner / 3;
                 if (g == f || double(glm::dot(unit_normals[f], unit_normals[g])) > limit)
-                    part += corners.weights[corner];
+                    part += split_weights[corners_at_vertex[at]];
             }
             result.split_normals[corners_at_vertex[own]] = normalized_or_zero(part);
         }
