@@ -157,29 +157,27 @@ class WeldGrid {
             }
         }
 
+        // Most points lie well inside their cell: only those within two
+        // weld distances of a face (twice, so that rounding can never hide
+        // one) look into the neighbouring cells.
+        const double margin = 2.0 / cells_per_weld_distance;
+        near_face_.assign(positions.size(), 0);
         points_.reserve(positions.size());
         for (std::size_t index = 0; index < positions.size(); ++index) {
             const glm::vec3& position = positions[index];
             if (!is_finite(position)) continue;  // a NaN would break the sort's ordering
-            const std::uint64_t cell = use_cells ? pack_cell(cell_coordinate(position.x, 0),
-                                                             cell_coordinate(position.y, 1),
-                                                             cell_coordinate(position.z, 2))
-                                                 : 0;
-            points_.push_back({cell, position, static_cast<std::uint32_t>(index)});
-        }
-        // Most points lie well inside their cell: only those within two
-        // weld distances of a face (twice, so that rounding can never hide
-        // one) look into the neighbouring cells.
-        near_face_.assign(positions.size(), 0);
-        if (use_cells) {
-            const double margin = 2.0 / cells_per_weld_distance;
-            for (const GridPoint& point : points_) {
+            std::uint64_t coordinate[3] = {0, 0, 0};
+            if (use_cells) {
                 for (int axis = 0; axis < 3; ++axis) {
-                    const double place = (double(point.position[axis]) - origin_[axis]) * inverse_cell_size_;
-                    const double within = place - std::floor(place);  // 0 to 1 across the cell
-                    if (within < margin || within > 1.0 - margin) near_face_[point.index] = 1;
+                    const double place = cell_place(position[axis], axis);
+                    const double cell = std::floor(place);
+                    coordinate[axis] = clamped_cell(cell, axis);
+                    const double within = place - cell;  // 0 to 1 across the cell
+                    if (within < margin || within > 1.0 - margin) near_face_[index] = 1;
                 }
             }
+            points_.push_back({pack_cell(coordinate[0], coordinate[1], coordinate[2]), position,
+                               static_cast<std::uint32_t>(index)});
         }
         sort_by_cell(points_, key_bits);
         for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
@@ -215,9 +213,14 @@ class WeldGrid {
     // Clamped to the grid: a lookup beyond its last cell finds that cell,
     // whose points the distance test then rejects.
     std::uint64_t cell_coordinate(double value, int axis) const {
-        // A multiplication, not a division: the same (monotonic) function
-        // places the points and looks them up, which is all exactness needs.
-        const double cell = std::floor((value - origin_[axis]) * inverse_cell_size_);
+        return clamped_cell(std::floor(cell_place(value, axis)), axis);
+    }
+    // A multiplication, not a division: the same (monotonic) function
+    // places the points and looks them up, which is all exactness needs.
+    double cell_place(double value, int axis) const {
+        return (value - origin_[axis]) * inverse_cell_size_;
+    }
+    std::uint64_t clamped_cell(double cell, int axis) const {
         if (!(cell > 0.0)) return 0;
         if (cell >= double(largest_[axis])) return largest_[axis];
         return static_cast<std::uint64_t>(cell);
