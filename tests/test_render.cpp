@@ -252,6 +252,17 @@ TEST(Renderer, UpdateKeepsTheMeshesUnlessAnObjectMoves) {
     EXPECT_EQ(renderer.render().rgb, first.rgb);
     EXPECT_EQ(renderer.mesh_builds(), 1u);
 
+    // Shadings that use face normals (computed only for them) after one
+    // that does not, without new meshes.
+    for (const litkit::Shading shading : {litkit::Shading::Flat, litkit::Shading::Faceted}) {
+        litkit::Scene faces = scene;
+        faces.shading = shading;
+        renderer.update(faces);
+        EXPECT_EQ(renderer.render().rgb, litkit::render(faces).rgb);
+        EXPECT_NE(renderer.render().rgb, first.rgb);
+    }
+    EXPECT_EQ(renderer.mesh_builds(), 1u);
+
     // Moving the object builds its mesh again.
     litkit::Scene moved = scene;
     moved.objects[0].position.x += 0.5f;

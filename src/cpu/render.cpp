@@ -60,7 +60,7 @@ constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
 struct PreparedObject {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;       // DD9, world space
-    std::vector<glm::vec3> face_normals;  // DD8, world space, per triangle
+    std::vector<glm::vec3> face_normals;  // DD8, world space, per triangle (flat, faceted)
     std::vector<std::array<std::uint32_t, 3>> triangles;
     equations::MaterialT<float> material;
     Material raw_material;
@@ -304,6 +304,18 @@ void Renderer::Impl::prepare_surfaces() {
         prepared.raw_material = object.material;
         prepared.reflection = object.reflection.value_or(scene_reflection);
         prepared.shading = object.shading.value_or(scene_shading);
+        // Face normals only for the shadings that use them (a 261k-triangle
+        // mesh under Phong shading would compute 3 MB for nothing); kept once
+        // computed, since the mesh is.
+        const bool uses_faces =
+            prepared.shading == Shading::Flat || prepared.shading == Shading::Faceted;
+        if (uses_faces && prepared.face_normals.empty()) {
+            prepared.face_normals.reserve(prepared.triangles.size());
+            for (const auto& t : prepared.triangles) {
+                prepared.face_normals.push_back(face_normal(
+                    prepared.positions[t[0]], prepared.positions[t[1]], prepared.positions[t[2]]));
+            }
+        }
     }
 }
 
@@ -317,11 +329,6 @@ void Renderer::Impl::prepare() {
         prepared.positions = std::move(mesh.positions);
         prepared.normals = std::move(mesh.normals);
         prepared.triangles = std::move(mesh.triangles);
-        prepared.face_normals.reserve(prepared.triangles.size());
-        for (const auto& t : prepared.triangles) {
-            prepared.face_normals.push_back(face_normal(
-                prepared.positions[t[0]], prepared.positions[t[1]], prepared.positions[t[2]]));
-        }
         objects.push_back(std::move(prepared));
     }
     prepare_surfaces();
