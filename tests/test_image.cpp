@@ -3,7 +3,12 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <zlib.h>
+
 #include <csignal>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 #include <filesystem>
 #include <fstream>
@@ -61,6 +66,100 @@ TEST_F(ScratchDir, PngStartsWithTheSignature) {
     const std::string bytes = litkit::encode_png(gradient(4, 4));
     ASSERT_GE(bytes.size(), 8u);
     EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+// A picture of every kind of content: runs (the background), gradients and
+// noise, large enough (over 512 KiB of rows) that encode_png deflates its two
+// halves apart and joins them.
+litkit::Image mixed_picture(int width, int height) {
+    litkit::Image image = gradient(width, height);
+    std::uint32_t state = 7;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint8_t* p = image.pixel(x, y);
+            if (y < height / 4) {
+                p[0] = 30, p[1] = 30, p[2] = 40;  // flat
+            } else if (y > height / 2 && y < height * 3 / 4 && x > width / 3) {
+                state = state * 1664525u + 1013904223u;  // noise
+                p[0] = static_cast<std::uint8_t>(state >> 24);
+                p[1] = static_cast<std::uint8_t>(state >> 16);
+                p[2] = static_cast<std::uint8_t>(state >> 8);
+            }
+        }
+    return image;
+}
+
+std::uint32_t big_endian(const std::string& bytes, std::size_t at) {
+    return (std::uint32_t(std::uint8_t(bytes[at])) << 24) |
+           (std::uint32_t(std::uint8_t(bytes[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(bytes[at + 2])) << 8) | std::uint8_t(bytes[at + 3]);
+}
+
+TEST_F(ScratchDir, PngOfEverySizeAndLevelRoundTrips) {
+    for (const auto& [width, height] : {std::pair{3, 1}, std::pair{37, 21}, std::pair{700, 400},
+                                        std::pair{1920, 1080}, std::pair{4000, 2}}) {
+        const litkit::Image original = mixed_picture(width, height);
+        for (const int level : {0, 1, 6, 9}) {
+            if (level != 1 && width * height > 700 * 400) continue;  // time
+            const fs::path path = dir / ("p" + std::to_string(level) + ".png");
+            litkit::write_file_atomically(path, litkit::encode_png(original, level));
+            const litkit::Image back = litkit::read_png(path);
+            ASSERT_EQ(back.width, width);
+            ASSERT_EQ(back.height, height);
+            EXPECT_EQ(back.rgb, original.rgb) << width << "x" << height << " level " << level;
+        }
+    }
+}
+
+// The file read without libpng: every chunk's CRC, the IHDR fields, and the
+// IDAT data as one zlib stream (zlib checks its Adler-32) holding exactly
+// the rows with PNG's "up" filter, across the place where the halves meet.
+TEST_F(ScratchDir, PngChunksAndZlibStreamAreWhatTheFormatSays) {
+    const litkit::Image image = mixed_picture(700, 400);
+    const std::string png = litkit::encode_png(image);
+    ASSERT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    std::string idat;
+    std::vector<std::string> types;
+    std::size_t at = 8;
+    while (at + 12 <= png.size()) {
+        const std::uint32_t length = big_endian(png, at);
+        ASSERT_LE(at + 12 + length, png.size());
+        const std::string type = png.substr(at + 4, 4);
+        const std::string data = png.substr(at + 8, length);
+        uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(png.data() + at + 4), 4 + length);
+        EXPECT_EQ(big_endian(png, at + 8 + length), static_cast<std::uint32_t>(crc)) << type;
+        if (type == "IHDR") {
+            ASSERT_EQ(length, 13u);
+            EXPECT_EQ(big_endian(data, 0), 700u);
+            EXPECT_EQ(big_endian(data, 4), 400u);
+            EXPECT_EQ(data.substr(8), std::string("\x08\x02\x00\x00\x00", 5));
+        }
+        if (type == "IDAT") idat += data;
+        types.push_back(type);
+        at += 12 + length;
+    }
+    EXPECT_EQ(at, png.size());
+    ASSERT_GE(types.size(), 3u);
+    EXPECT_EQ(types.front(), "IHDR");
+    EXPECT_EQ(types.back(), "IEND");
+
+    const std::size_t row = 700 * 3 + 1;
+    std::vector<unsigned char> expected(row * 400);
+    for (int y = 0; y < 400; ++y) {
+        expected[row * y] = 2;
+        for (std::size_t i = 0; i < 700 * 3; ++i) {
+            const std::uint8_t above = y ? image.rgb[(y - 1) * 700 * 3 + i] : 0;
+            expected[row * y + 1 + i] =
+                static_cast<unsigned char>(image.rgb[y * 700 * 3 + i] - above);
+        }
+    }
+    std::vector<unsigned char> inflated(expected.size() + 1);
+    uLongf size = static_cast<uLongf>(inflated.size());
+    ASSERT_EQ(uncompress(inflated.data(), &size, reinterpret_cast<const Bytef*>(idat.data()),
+                         static_cast<uLong>(idat.size())),
+              Z_OK);
+    inflated.resize(size);
+    EXPECT_TRUE(inflated == expected);
 }
 
 TEST_F(ScratchDir, AtomicWriteReplacesTheWholeFile) {
