@@ -11,6 +11,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <utility>
 
 namespace litkit {
@@ -111,6 +112,14 @@ Mesh make_sphere(float radius, int segments, int rings) {
     mesh.positions.reserve(static_cast<std::size_t>(latitude_circles) * to_index(segments) + 2);
     mesh.triangles.reserve(2 * static_cast<std::size_t>(segments) * to_index(latitude_circles));
 
+    // Every circle has the same azimuths: their sines and cosines once.
+    std::vector<double> azimuth_sin(to_index(segments));
+    std::vector<double> azimuth_cos(to_index(segments));
+    for (int segment = 0; segment < segments; ++segment) {
+        const double azimuth = 2.0 * std::numbers::pi * segment / segments;
+        azimuth_sin[to_index(segment)] = std::sin(azimuth);
+        azimuth_cos[to_index(segment)] = std::cos(azimuth);
+    }
     const std::uint32_t north_pole = 0;
     mesh.positions.emplace_back(0.0f, radius, 0.0f);
     for (int circle = 1; circle <= latitude_circles; ++circle) {
@@ -118,9 +127,8 @@ Mesh make_sphere(float radius, int segments, int rings) {
         const double circle_radius = radius * std::sin(polar_angle);
         const double height = radius * std::cos(polar_angle);
         for (int segment = 0; segment < segments; ++segment) {
-            const double azimuth = 2.0 * std::numbers::pi * segment / segments;
-            mesh.positions.emplace_back(circle_radius * std::sin(azimuth), height,
-                                        circle_radius * std::cos(azimuth));
+            mesh.positions.emplace_back(circle_radius * azimuth_sin[to_index(segment)], height,
+                                        circle_radius * azimuth_cos[to_index(segment)]);
         }
     }
     const auto south_pole = static_cast<std::uint32_t>(mesh.positions.size());
