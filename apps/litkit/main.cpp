@@ -32,8 +32,8 @@
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
 #include "heap.hpp"
+#include "open_viewer.hpp"
 #include "usage.hpp"
-#include "viewer/viewer.hpp"
 #include "litkit/validate.hpp"
 
 namespace {
@@ -513,6 +513,8 @@ int run_compare(const CompareArguments& arguments) {
 }
 
 int run_view(const ViewArguments& arguments) {
+    // SDL2 and Dear ImGui load only now, with the module (docs/design.md).
+    const litkit_cli::ViewerModule& viewer = litkit_cli::open_viewer_module();
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
     litkit_cli::ViewerOptions options;
@@ -529,7 +531,7 @@ int run_view(const ViewArguments& arguments) {
         settle_missing_lighting(loaded, true);
         return loaded;
     };
-    return litkit_cli::run_viewer(options, std::move(scene));
+    return viewer.run(options, std::move(scene));
 }
 
 int run_explain(const ExplainArguments& arguments) {
@@ -817,6 +819,9 @@ int main(int argc, char** argv) {
     } catch (const UsageError& error) {
         std::cerr << "error: " << error.message << "\n";
         return exit_invalid;
+    } catch (const litkit_cli::ViewerModuleError& error) {
+        std::cerr << "error: " << error.message << "\n";
+        return exit_io;
     } catch (const std::bad_alloc&) {
         // Never "std::bad_alloc": what ran out, and what to do about it.
         std::cerr << "error: out of memory while " << (render->parsed() || compare->parsed() ||

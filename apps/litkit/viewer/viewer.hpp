@@ -1,6 +1,7 @@
 // `litkit view`: a live window on a scene (docs/viewer.md).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -30,4 +31,19 @@ struct ViewerOptions {
 // as loaded and checked at start.
 int run_viewer(const ViewerOptions& options, litkit::Scene scene);
 
+// The viewer is a module of its own (litkit-view.so, with SDL2, Dear ImGui
+// and libepoxy), opened only by `litkit view` (docs/design.md, "The viewer
+// module"). This is all it exports: the CLI checks that the module was built
+// from the same litkit, with the same layout of what crosses, before it
+// calls run.
+struct ViewerModule {
+    const char* version;        // LITKIT_VERSION
+    std::size_t options_size;   // sizeof(ViewerOptions)
+    std::size_t scene_size;     // sizeof(litkit::Scene)
+    int (*run)(const ViewerOptions& options, litkit::Scene scene);
+};
+
 }  // namespace litkit_cli
+
+// The module's one exported symbol, by a C name for dlsym.
+extern "C" const litkit_cli::ViewerModule* litkit_viewer_module();
