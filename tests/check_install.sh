@@ -4,8 +4,9 @@
 # Also checks what the package installs: exactly the public headers (each
 # one in litkit.hpp but gl_renderer.hpp, litkit::gl's own), the docs and the
 # examples; and that docs/cpp-api.md shows the consumer's program unchanged;
-# and that the installed `litkit view` finds its module (lib/litkit) and
-# shows a scene in a window on a virtual display (Xvfb).
+# and that the installed CLI finds its modules (lib/litkit): `--backend gl`
+# draws, and `litkit view` shows a scene in a window on a virtual display
+# (Xvfb).
 # Usage: check_install.sh BUILD_DIR
 set -euo pipefail
 build=$1
@@ -63,9 +64,13 @@ cmake --build "$scratch/consumer" > /dev/null
 test -x "$prefix/bin/litkit"
 "$prefix/bin/litkit" --version
 
-# The viewer is a module the installed CLI finds relative to itself.
-# (lib/litkit, or lib/<multiarch>/litkit where GNUInstallDirs picks that).
-find "$prefix" -path '*/lib*/litkit/litkit-view.so' | grep -q . || fail "the viewer module is not in lib/litkit"
+# The modules, which the installed CLI finds relative to itself (in
+# lib/litkit, or lib/<multiarch>/litkit where GNUInstallDirs picks that).
+for module in litkit-view.so litkit-gl.so; do
+    find "$prefix" -path "*/lib*/litkit/$module" | grep -q . || fail "$module is not in lib/litkit"
+done
+"$prefix/bin/litkit" render --backend gl --width 80 --height 60 -o "$scratch/gl.png" |
+    grep -q "OpenGL backend: " || fail "the installed litkit render --backend gl failed"
 Xvfb -displayfd 1 -screen 0 640x480x24 -nolisten tcp -noreset > "$scratch/display" 2> /dev/null &
 xvfb_pid=$!
 for _ in $(seq 200); do test -s "$scratch/display" && break; sleep 0.05; done

@@ -3,7 +3,6 @@
 // real input events (xdotool) and read back with xwd. Every picture is
 // compared with `litkit render` of the same settings.
 #include <gtest/gtest.h>
-#include <dlfcn.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -13,7 +12,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,14 +29,7 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using litkit_test::run_command;
 
-// Built by appending: GCC 12's -Wrestrict misfires on "'" + std::string
-// once inlined (GCC bug 105329).
-std::string quoted(const fs::path& path) {
-    std::string text = "'";
-    text += path.string();
-    text += "'";
-    return text;
-}
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 // One Xvfb for the whole suite, on a display number it picks itself.
 class Display {
@@ -433,78 +424,4 @@ TEST_F(Viewer, OpenGlBackendDrawsInTheWindowsOwnContext) {
     EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1) << "after an orbit and R";
     key("q");
     EXPECT_EQ(wait_exit(), 0);
-}
-
-// The viewer is a module that only `litkit view` opens (docs/design.md, "The
-// viewer module"): the executable itself needs none of the window's
-// libraries, and a missing or broken module is an error message, not a
-// crash. Each test runs a copy of the CLI in a folder of its own, laid out
-// as an install (bin/litkit, lib/litkit/), with or without a module there.
-class ViewerModule : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() / ("litkit-module-" + std::to_string(getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir / "bin");
-        fs::create_directories(dir / "lib" / "litkit");
-        fs::copy_file(LITKIT_CLI, cli());
-        fs::permissions(cli(), fs::perms::owner_all);
-        std::ofstream(dir / "scene.toml") << small_scene;
-    }
-    void TearDown() override { fs::remove_all(dir); }
-
-    fs::path cli() const { return dir / "bin" / "litkit"; }
-    fs::path installed_module() const { return dir / "lib" / "litkit" / "litkit-view.so"; }
-    litkit_test::CommandRun run(const std::string& arguments) const {
-        return run_command("cd " + quoted(dir) + " && " + quoted(cli()) + " " + arguments);
-    }
-
-    fs::path dir;
-};
-
-TEST(ViewerModuleLinking, TheExecutableLoadsNoWindowLibraries) {
-    // What the dynamic loader loads for the executable (how ldd asks it).
-    const auto loaded = run_command("LD_TRACE_LOADED_OBJECTS=1 '" LITKIT_CLI "'");
-    ASSERT_EQ(loaded.status, 0) << loaded.output;
-    ASSERT_NE(loaded.output.find("libstdc++"), std::string::npos) << loaded.output;
-    for (const char* library : {"libSDL2", "libimgui", "libX11", "libwayland", "libpulse", "libasound"})
-        EXPECT_EQ(loaded.output.find(library), std::string::npos) << library << " in\n" << loaded.output;
-}
-
-TEST_F(ViewerModule, MissingModuleIsAClearErrorAndEveryOtherCommandWorks) {
-    const auto view = run("view scene.toml");
-    EXPECT_EQ(view.status, 1) << view.output;
-    EXPECT_EQ(view.output.rfind("error: litkit view needs its window module", 0), 0u) << view.output;
-    EXPECT_NE(view.output.find(installed_module().string()), std::string::npos) << view.output;
-
-    const auto render = run("render scene.toml -o picture.png");
-    EXPECT_EQ(render.status, 0) << render.output;
-    EXPECT_TRUE(fs::exists(dir / "picture.png"));
-    // The help documents `view` without the module (the man page is made from it).
-    const auto help = run("view --help");
-    EXPECT_EQ(help.status, 0) << help.output;
-    EXPECT_NE(help.output.find("--orbit-frames"), std::string::npos) << help.output;
-}
-
-TEST_F(ViewerModule, BrokenModuleIsAClearError) {
-    std::ofstream(installed_module()) << "not a shared library\n";
-    const auto view = run("view scene.toml");
-    EXPECT_EQ(view.status, 1) << view.output;
-    EXPECT_EQ(view.output.rfind("error: litkit view cannot load its module " + installed_module().string() + ": ", 0), 0u)
-        << view.output;
-}
-
-TEST_F(ViewerModule, ALibraryThatIsNotTheViewerIsRefused) {
-    // A real shared library without the viewer's entry point: libstdc++.
-    Dl_info library{};
-    ASSERT_NE(dladdr(reinterpret_cast<void*>(&std::terminate), &library), 0);
-    ASSERT_NE(library.dli_fname, nullptr);
-    fs::copy_file(library.dli_fname, installed_module());
-    const auto view = run("view scene.toml");
-    EXPECT_EQ(view.status, 1) << view.output;
-    const std::string version = run("--version").output;  // "litkit 0.1.0\n"
-    EXPECT_EQ(view.output, "error: " + installed_module().string() + " is not the viewer module of " +
-                               version.substr(0, version.size() - 1) +
-                               " (another build's?); install litkit again\n");
 }

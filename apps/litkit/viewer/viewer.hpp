@@ -1,13 +1,13 @@
 // `litkit view`: a live window on a scene (docs/viewer.md).
 #pragma once
 
-#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "litkit/scene.hpp"
+#include "modules.hpp"
 
 namespace litkit_cli {
 
@@ -31,19 +31,14 @@ struct ViewerOptions {
 // as loaded and checked at start.
 int run_viewer(const ViewerOptions& options, litkit::Scene scene);
 
-// The viewer is a module of its own (litkit-view.so, with SDL2, Dear ImGui
-// and libepoxy), opened only by `litkit view` (docs/design.md, "The viewer
-// module"). This is all it exports: the CLI checks that the module was built
-// from the same litkit, with the same layout of what crosses, before it
-// calls run.
+// The viewer is a module of its own, litkit-view.so, which only `litkit
+// view` opens (modules.hpp). This is what its entry function returns.
 struct ViewerModule {
-    const char* version;        // LITKIT_VERSION
-    std::size_t options_size;   // sizeof(ViewerOptions)
-    std::size_t scene_size;     // sizeof(litkit::Scene)
+    ModuleStamp stamp;  // module_stamp<ViewerModule, ViewerOptions>()
     int (*run)(const ViewerOptions& options, litkit::Scene scene);
 };
 
 }  // namespace litkit_cli
 
-// The module's one exported symbol, by a C name for dlsym.
+// The viewer module's entry, by a C name for dlsym.
 extern "C" const litkit_cli::ViewerModule* litkit_viewer_module();
