@@ -3,14 +3,18 @@
 # project that finds it with find_package(litkit), from a fresh build folder.
 # Also checks what the package installs: exactly the public headers (each
 # one in litkit.hpp but gl_renderer.hpp, litkit::gl's own), the docs and the
-# examples; and that docs/cpp-api.md shows the consumer's program unchanged.
+# examples; and that docs/cpp-api.md shows the consumer's program unchanged;
+# and that the installed CLI finds its modules (lib/litkit): `--backend gl`
+# draws, and `litkit view` shows a scene in a window on a virtual display
+# (Xvfb).
 # Usage: check_install.sh BUILD_DIR
 set -euo pipefail
 build=$1
 here=$(cd "$(dirname "$0")" && pwd)
 source_dir=$(cd "$here/.." && pwd)
 scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+xvfb_pid=
+trap 'test -z "$xvfb_pid" || kill "$xvfb_pid"; rm -rf "$scratch"' EXIT
 fail() { echo "check_install: $*" >&2; exit 1; }
 
 # docs/cpp-api.md's program is tests/install_consumer/main.cpp, to the byte.
@@ -59,3 +63,19 @@ cmake --build "$scratch/consumer" > /dev/null
 "$scratch/consumer/gl_and_teaching"
 test -x "$prefix/bin/litkit"
 "$prefix/bin/litkit" --version
+
+# The modules, which the installed CLI finds relative to itself (in
+# lib/litkit, or lib/<multiarch>/litkit where GNUInstallDirs picks that).
+for module in litkit-view.so litkit-gl.so; do
+    find "$prefix" -path "*/lib*/litkit/$module" | grep -q . || fail "$module is not in lib/litkit"
+done
+"$prefix/bin/litkit" render --backend gl --width 80 --height 60 -o "$scratch/gl.png" |
+    grep -q "OpenGL backend: " || fail "the installed litkit render --backend gl failed"
+Xvfb -displayfd 1 -screen 0 640x480x24 -nolisten tcp -noreset > "$scratch/display" 2> /dev/null &
+xvfb_pid=$!
+for _ in $(seq 200); do test -s "$scratch/display" && break; sleep 0.05; done
+test -s "$scratch/display" || fail "Xvfb did not start (scripts/install-deps.sh installs it)"
+shown=$(DISPLAY=":$(cat "$scratch/display")" "$prefix/bin/litkit" view --no-ui --width 80 --height 60 \
+        --orbit-frames 3 "$prefix/share/litkit/examples/mesh.toml") ||
+    fail "the installed litkit view failed"
+grep -q "^orbit: 3 frames of 80x60" <<< "$shown" && echo "$shown" || fail "the installed litkit view said: $shown"

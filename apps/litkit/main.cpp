@@ -31,7 +31,9 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
+#include "gl_module.hpp"
 #include "heap.hpp"
+#include "modules.hpp"
 #include "usage.hpp"
 #include "viewer/viewer.hpp"
 #include "litkit/validate.hpp"
@@ -209,7 +211,9 @@ public:
     Backend(const litkit::Scene& scene, const SceneArguments& arguments) {
         const litkit::RenderOptions options{.threads = arguments.threads.value_or(0)};
         if (arguments.backend == "gl")
-            gl_ = std::make_unique<litkit::GlRenderer>(scene, options);
+            gl_ = litkit_cli::open_module<litkit_cli::GlModule, litkit::RenderOptions>(
+                      "litkit-gl.so", "litkit_gl_module", "--backend gl")
+                      .create(scene, options);
         else
             cpu_ = std::make_unique<litkit::Renderer>(scene, options);
     }
@@ -235,7 +239,7 @@ public:
 
 private:
     std::unique_ptr<litkit::Renderer> cpu_;
-    std::unique_ptr<litkit::GlRenderer> gl_;
+    std::unique_ptr<litkit_cli::GlBackend> gl_;  // from the module litkit-gl.so
 };
 
 // A usage problem found after CLI11's own parsing (exit status 2).
@@ -513,6 +517,9 @@ int run_compare(const CompareArguments& arguments) {
 }
 
 int run_view(const ViewArguments& arguments) {
+    // SDL2 and Dear ImGui load only now, with the module (docs/design.md).
+    const auto& viewer = litkit_cli::open_module<litkit_cli::ViewerModule, litkit_cli::ViewerOptions>(
+        "litkit-view.so", "litkit_viewer_module", "litkit view");
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
     litkit_cli::ViewerOptions options;
@@ -529,7 +536,7 @@ int run_view(const ViewArguments& arguments) {
         settle_missing_lighting(loaded, true);
         return loaded;
     };
-    return litkit_cli::run_viewer(options, std::move(scene));
+    return viewer.run(options, std::move(scene));
 }
 
 int run_explain(const ExplainArguments& arguments) {
@@ -817,6 +824,9 @@ int main(int argc, char** argv) {
     } catch (const UsageError& error) {
         std::cerr << "error: " << error.message << "\n";
         return exit_invalid;
+    } catch (const litkit_cli::ModuleError& error) {
+        std::cerr << "error: " << error.message << "\n";
+        return exit_io;
     } catch (const std::bad_alloc&) {
         // Never "std::bad_alloc": what ran out, and what to do about it.
         std::cerr << "error: out of memory while " << (render->parsed() || compare->parsed() ||

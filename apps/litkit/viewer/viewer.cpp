@@ -600,3 +600,9 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
 }
 
 }  // namespace litkit_cli
+
+extern "C" __attribute__((visibility("default"))) const litkit_cli::ViewerModule* litkit_viewer_module() {
+    static constexpr litkit_cli::ViewerModule module{
+        litkit_cli::module_stamp<litkit_cli::ViewerModule, litkit_cli::ViewerOptions>(), litkit_cli::run_viewer};
+    return &module;
+}

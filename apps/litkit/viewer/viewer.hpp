@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "litkit/scene.hpp"
+#include "modules.hpp"
 
 namespace litkit_cli {
 
@@ -30,4 +31,14 @@ struct ViewerOptions {
 // as loaded and checked at start.
 int run_viewer(const ViewerOptions& options, litkit::Scene scene);
 
+// The viewer is a module of its own, litkit-view.so, which only `litkit
+// view` opens (modules.hpp). This is what its entry function returns.
+struct ViewerModule {
+    ModuleStamp stamp;  // module_stamp<ViewerModule, ViewerOptions>()
+    int (*run)(const ViewerOptions& options, litkit::Scene scene);
+};
+
 }  // namespace litkit_cli
+
+// The viewer module's entry, by a C name for dlsym.
+extern "C" const litkit_cli::ViewerModule* litkit_viewer_module();
