@@ -245,7 +245,10 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         std::unique_ptr<Drawer> drawer;
         litkit::Image image;
         FileWatcher watcher(files_of(options, file_scene));
-        std::optional<clock_type::time_point> reload_at;
+        // When to reload after a change (`never`: none waiting). A plain time,
+        // not an optional: GCC 12 took the optional's value for uninitialised.
+        constexpr clock_type::time_point never = clock_type::time_point::max();
+        clock_type::time_point reload_at = never;
         double frame_ms = 0.0;
         int shown_width = 0, shown_height = 0;
         char save_path[512] = "";
@@ -289,7 +292,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             const int timeout =
                 dirty || panel_frames > 0 || options.benchmark_frames > 0 ? 0
                 : turntable || drag_button                                 ? 10
-                : reload_at                                                ? 20
+                : reload_at != never                                       ? 20
                                                                            : 100;
             SDL_Event event;
             bool have = SDL_WaitEventTimeout(&event, timeout) == 1;
@@ -402,8 +405,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             // Live reload: a change starts a short wait (an editor may write
             // in several steps); then read, check, and show or keep.
             if (watcher.changed()) reload_at = clock_type::now() + std::chrono::milliseconds(60);
-            if (reload_at && clock_type::now() >= *reload_at) {
-                reload_at.reset();
+            if (reload_at != never && clock_type::now() >= reload_at) {
+                reload_at = never;
                 try {
                     litkit::Scene loaded = options.load();
                     if (!(loaded.observer.position == file_scene.observer.position &&
