@@ -46,7 +46,7 @@ struct Piece {
 
 void grow(Piece& piece, std::size_t capacity) {
     auto bigger = std::make_unique_for_overwrite<unsigned char[]>(capacity);
-    std::memcpy(bigger.get(), piece.bytes.get(), piece.size);
+    if (piece.size) std::memcpy(bigger.get(), piece.bytes.get(), piece.size);
     piece.bytes = std::move(bigger);
     piece.capacity = capacity;
 }
