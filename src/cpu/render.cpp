@@ -144,39 +144,92 @@ std::int32_t round_to_int(double v) {
 // Varyings of the corners of a piece of a clipped triangle.
 using CornerVaryings = std::array<std::array<float, max_varyings>, 3>;
 
-// A triangle ready to rasterize: fixed-point window coordinates and 1/w per
-// corner, ordered so that its doubled area is positive, and where its
+// A corner in window coordinates: fixed-point x, y and 1/w, and the clip
+// planes it lies outside of (bit k: plane_distances(c)[k] < 0). Unclipped
+// triangles take their corners from the vertex stage, which makes one per
+// mesh vertex; clipped pieces make theirs in setup, with the same function.
+struct WindowCorner {
+    std::int32_t x = 0, y = 0;
+    float inverse_w = 0.0f;
+    std::uint8_t outside = 0;  // clip planes, one bit each
+    bool valid = false;        // false: beyond the fixed-point range (degenerate input)
+};
+
+// The setup of what the fragment stage needs of a triangle: where its
 // varyings come from (the mesh's vertices, or a clipped polygon's own).
-struct RasterTriangle {
-    std::array<std::int32_t, 3> x, y;
-    std::array<float, 3> inverse_w;
+// Looked up once per span of visible pixels, not by the visibility pass.
+struct ShadeTriangle {
     std::uint32_t object;
     std::uint32_t source;                   // triangle index within the object
     std::array<std::uint32_t, 3> vertex;    // mesh vertices, corner by corner
     std::int32_t clipped;                   // index into SetupChunk::clipped, or −1
     const CornerVaryings* varyings;         // &SetupChunk::clipped[clipped], or null
-    std::int32_t min_x, max_x, min_y, max_y;  // pixel bounds, inclusive, inside the image
+};
+
+// A triangle ready to rasterize: fixed-point window coordinates and 1/w per
+// corner, ordered so that its doubled area is positive, its pixel bounds
+// (inclusive, inside the image: at most 16384, so 16 bits), and its
+// ShadeTriangle within the chunk. Setup copies it into every band it may
+// touch, so the visibility pass reads its band's triangles in one stream
+// (48 bytes each) instead of fetching them by index.
+struct RasterTriangle {
+    std::array<std::int32_t, 3> x, y;
+    std::array<float, 3> inverse_w;
+    std::int16_t min_x, max_x, min_y, max_y;
+    std::uint32_t shade;                    // index into SetupChunk::shade
 };
 
 // One setup job's output, kept between frames to reuse its memory.
 struct SetupChunk {
     std::uint32_t object = 0;
     std::size_t begin = 0, end = 0;  // triangle range within the object
-    std::vector<RasterTriangle> triangles;
+    std::vector<ShadeTriangle> shade;
     std::vector<CornerVaryings> clipped;
-    std::vector<std::vector<std::uint32_t>> bands;  // indices into `triangles`, per band
+    // The triangles of each band of rows, band after band, each band's in
+    // setup order: band b's are binned[band_start[b] .. band_start[b + 1]).
+    std::vector<RasterTriangle> binned;
+    std::vector<std::uint32_t> band_start;
 };
+
+// Perspective divide, viewport and fixed point of one clip-space corner.
+WindowCorner to_window(const glm::vec4& c, float half_width, float half_height) {
+    WindowCorner out;
+    const std::array<float, 6> d = plane_distances(c);
+    for (int plane = 0; plane < 6; ++plane)
+        out.outside |= static_cast<std::uint8_t>((d[plane] < 0.0f ? 1 : 0) << plane);
+    const float inverse_w = 1.0f / c.w;
+    // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
+    const double window_x = (c.x * inverse_w + 1.0f) * half_width;
+    const double window_y = (1.0f - c.y * inverse_w) * half_height;
+    // The guard band keeps every corner within a few image sizes of the
+    // picture; only degenerate input (coordinates near a float's limit,
+    // where clipping loses all precision) can leave it, and a triangle
+    // with such a corner is dropped rather than turned into an integer that
+    // overflows.
+    const double fixed_x = window_x * subpixel_one, fixed_y = window_y * subpixel_one;
+    if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
+          std::abs(fixed_y) < largest_fixed_coordinate))
+        return out;
+    out.x = round_to_int(fixed_x);
+    out.y = round_to_int(fixed_y);
+    out.inverse_w = inverse_w;
+    out.valid = true;
+    return out;
+}
 
 // Per-thread scratch for one band: the visibility buffer (nearest triangle
 // and its perspective-correct weights per pixel) and one row of colours.
 struct BandScratch {
     std::vector<float> depth;                    // 1/w; 0 = nothing drawn
-    std::vector<const RasterTriangle*> visible;  // nullptr = background
+    std::vector<const ShadeTriangle*> visible;   // nullptr = background
     std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
     std::vector<float> r, g, b;                  // one row of intensities
     std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
+    // Setup's triangles of the chunk at hand, before they are binned.
+    std::vector<RasterTriangle> pending;
+    std::vector<std::uint32_t> band_count;
 };
 
 const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
@@ -219,6 +272,7 @@ struct Renderer::Impl {
 
     // Per-frame state, kept between frames to avoid reallocating.
     std::vector<std::vector<glm::vec4>> clip_positions;  // per object, per vertex
+    std::vector<std::vector<WindowCorner>> window_corners;  // per object, per vertex
     std::vector<std::vector<glm::vec3>> vertex_colors;   // Gouraud, per object
     std::vector<std::vector<glm::vec3>> flat_colors;     // flat, per object, per triangle
     std::vector<SetupChunk> chunks;
@@ -243,7 +297,7 @@ struct Renderer::Impl {
     void prepare();
     void prepare_surfaces();
     void vertex_stage(int width, int height);
-    void setup(SetupChunk& chunk, int width, int height);
+    void setup(SetupChunk& chunk, BandScratch& scratch, int width, int height);
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
@@ -253,7 +307,7 @@ namespace {
 
 // Phong shading's varyings at a pixel: p and N mixed from the corners (the
 // mesh's, or a clipped piece's) with the perspective-correct weights.
-inline void interpolate_surface(const PreparedObject& object, const RasterTriangle& tri, float q0,
+inline void interpolate_surface(const PreparedObject& object, const ShadeTriangle& tri, float q0,
                                 float q1, float q2, glm::vec3& p, glm::vec3& n) {
     if (tri.clipped < 0) {
         p = q0 * object.positions[tri.vertex[0]] + q1 * object.positions[tri.vertex[1]] +
@@ -277,7 +331,7 @@ inline void interpolate_surface(const PreparedObject& object, const RasterTriang
 // shaded (so the hot loop carries no test for it), with the fragment stage's
 // own formulas.
 void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) const {
-    const RasterTriangle* tri = s.visible[i];
+    const ShadeTriangle* tri = s.visible[i];
     const float w = 1.0f / s.depth[i];
     const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
     probed.hit = true;
@@ -345,6 +399,7 @@ void Renderer::Impl::prepare() {
         }
     }
     clip_positions.resize(objects.size());
+    window_corners.resize(objects.size());
     vertex_colors.resize(objects.size());
     flat_colors.resize(objects.size());
     scratch.resize(static_cast<std::size_t>(pool.size()));
@@ -370,12 +425,17 @@ void Renderer::Impl::vertex_stage(int width, int height) {
         const PreparedObject& object = objects[o];
         std::vector<glm::vec4>& clip = clip_positions[o];
         clip.resize(object.positions.size());
+        std::vector<WindowCorner>& window = window_corners[o];
+        window.resize(object.positions.size());
+        const float half_width = 0.5f * static_cast<float>(width);
+        const float half_height = 0.5f * static_cast<float>(height);
         std::vector<glm::vec3>& colors = vertex_colors[o];
         if (object.shading == Shading::Gouraud) colors.resize(object.positions.size());
         pool.parallel_for((clip.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
             const std::size_t end = std::min(clip.size(), (c + 1) * chunk);
             for (std::size_t i = c * chunk; i < end; ++i) {
                 clip[i] = view_projection * glm::vec4(object.positions[i], 1.0f);
+                window[i] = to_window(clip[i], half_width, half_height);
                 if (object.shading == Shading::Gouraud)
                     colors[i] = light_with(object.reflection, lights, object.material,
                                            object.positions[i], object.normals[i], eye);
@@ -388,52 +448,37 @@ void Renderer::Impl::vertex_stage(int width, int height) {
 }
 
 // Clip and setup stages for one range of triangles, then binning to bands.
-void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
+void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, int height) {
     const PreparedObject& object = objects[chunk.object];
     const std::vector<glm::vec4>& clip = clip_positions[chunk.object];
+    const std::vector<WindowCorner>& window = window_corners[chunk.object];
     const bool per_pixel = object.shading == Shading::Phong || object.shading == Shading::Faceted;
     const int varying_count = per_pixel                            ? 6
                               : object.shading == Shading::Gouraud ? 3
                                                                    : 0;
     const float half_width = 0.5f * static_cast<float>(width);
     const float half_height = 0.5f * static_cast<float>(height);
-    chunk.triangles.clear();
+    std::vector<RasterTriangle>& pending = scratch.pending;
+    pending.clear();
+    chunk.shade.clear();
     chunk.clipped.clear();
 
     bool flat_done = false;  // the current source triangle's flat colour is computed
-    // Viewport and setup of one (piece of a) triangle; false when culled.
-    auto emit = [&](const std::array<glm::vec4, 3>& corners, std::uint32_t source,
-                    const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
-        RasterTriangle raster;
-        for (int m = 0; m < 3; ++m) {
-            const glm::vec4& c = corners[m];
-            const float inverse_w = 1.0f / c.w;
-            // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
-            const double window_x = (c.x * inverse_w + 1.0f) * half_width;
-            const double window_y = (1.0f - c.y * inverse_w) * half_height;
-            // The guard band keeps every corner within a few image sizes of
-            // the picture; only degenerate input (coordinates near a float's
-            // limit, where clipping loses all precision) can leave it, and
-            // such a piece is dropped rather than turned into an integer
-            // that overflows.
-            const double fixed_x = window_x * subpixel_one, fixed_y = window_y * subpixel_one;
-            if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
-                  std::abs(fixed_y) < largest_fixed_coordinate))
-                return;
-            raster.x[m] = round_to_int(fixed_x);
-            raster.y[m] = round_to_int(fixed_y);
-            raster.inverse_w[m] = inverse_w;
-        }
+    // Setup of one (piece of a) triangle from its window corners; nothing
+    // when culled.
+    auto emit = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
+                    std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
+                    const CornerVaryings* varyings) {
+        if (!(c0.valid && c1.valid && c2.valid)) return;
         // Doubled signed area in y-down window coordinates: a triangle
         // counter-clockwise on screen (front-facing) has a negative one.
-        const std::int64_t area =
-            std::int64_t{raster.x[1] - raster.x[0]} * (raster.y[2] - raster.y[0]) -
-            std::int64_t{raster.y[1] - raster.y[0]} * (raster.x[2] - raster.x[0]);
+        const std::int64_t area = std::int64_t{c1.x - c0.x} * (c2.y - c0.y) -
+                                  std::int64_t{c1.y - c0.y} * (c2.x - c0.x);
         if (area >= 0) return;  // back face or zero area: culled
-        std::swap(raster.x[1], raster.x[2]);
-        std::swap(raster.y[1], raster.y[2]);
-        std::swap(raster.inverse_w[1], raster.inverse_w[2]);
-        raster.vertex = {vertex[0], vertex[2], vertex[1]};
+        RasterTriangle raster;
+        raster.x = {c0.x, c2.x, c1.x};
+        raster.y = {c0.y, c2.y, c1.y};
+        raster.inverse_w = {c0.inverse_w, c2.inverse_w, c1.inverse_w};
 
         // Pixel i covers the centre i + 0.5.
         auto first_pixel = [](std::int64_t lo) {
@@ -444,13 +489,15 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         };
         const auto [min_x, max_x] = std::minmax({raster.x[0], raster.x[1], raster.x[2]});
         const auto [min_y, max_y] = std::minmax({raster.y[0], raster.y[1], raster.y[2]});
-        raster.min_x = std::max(0, first_pixel(min_x));
-        raster.max_x = std::min(width - 1, last_pixel(max_x));
-        raster.min_y = std::max(0, first_pixel(min_y));
-        raster.max_y = std::min(height - 1, last_pixel(max_y));
-        if (raster.min_x > raster.max_x || raster.min_y > raster.max_y) return;
-        raster.object = chunk.object;
-        raster.source = source;
+        const int left = std::max(0, first_pixel(min_x));
+        const int right = std::min(width - 1, last_pixel(max_x));
+        const int top = std::max(0, first_pixel(min_y));
+        const int bottom = std::min(height - 1, last_pixel(max_y));
+        if (left > right || top > bottom) return;
+        raster.min_x = static_cast<std::int16_t>(left);
+        raster.max_x = static_cast<std::int16_t>(right);
+        raster.min_y = static_cast<std::int16_t>(top);
+        raster.max_y = static_cast<std::int16_t>(bottom);
         if (object.shading == Shading::Flat && !flat_done) {
             // docs/spec.md §3 flat: lit once, at the centroid of the whole (unclipped)
             // triangle, with its face normal.
@@ -462,31 +509,33 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
                            object.face_normals[source], scene.observer.position);
             flat_done = true;
         }
-        raster.clipped = -1;
+        ShadeTriangle shade;
+        shade.object = chunk.object;
+        shade.source = source;
+        shade.vertex = {vertex[0], vertex[2], vertex[1]};
+        shade.clipped = -1;
+        shade.varyings = nullptr;
         if (varyings) {
-            raster.clipped = static_cast<std::int32_t>(chunk.clipped.size());
+            shade.clipped = static_cast<std::int32_t>(chunk.clipped.size());
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
-        chunk.triangles.push_back(raster);
+        raster.shade = static_cast<std::uint32_t>(chunk.shade.size());
+        chunk.shade.push_back(shade);
+        pending.push_back(raster);
     };
 
     for (std::size_t t = chunk.begin; t < chunk.end; ++t) {
         const auto& indices = object.triangles[t];
-        const std::array<glm::vec4, 3> corners = {clip[indices[0]], clip[indices[1]],
-                                                  clip[indices[2]]};
-        // Trivial accept and reject against the six clip planes.
-        bool all_inside = true, rejected = false;
-        for (int plane = 0; plane < 6 && !rejected; ++plane) {
-            int outside = 0;
-            for (const glm::vec4& c : corners) outside += plane_distances(c)[plane] < 0.0f;
-            rejected = outside == 3;
-            all_inside = all_inside && outside == 0;
-        }
-        if (rejected) continue;
+        const WindowCorner& w0 = window[indices[0]];
+        const WindowCorner& w1 = window[indices[1]];
+        const WindowCorner& w2 = window[indices[2]];
+        // Trivial reject (all three corners outside one plane) and accept
+        // (no corner outside any) against the six clip planes.
+        if (w0.outside & w1.outside & w2.outside) continue;
         const std::uint32_t source = static_cast<std::uint32_t>(t);
         flat_done = false;
-        if (all_inside) {
-            emit(corners, source, indices, nullptr);
+        if ((w0.outside | w1.outside | w2.outside) == 0) {
+            emit(w0, w1, w2, source, indices, nullptr);
             continue;
         }
         // Clipping: the pieces carry their own varyings, interpolated in
@@ -494,7 +543,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         std::array<ClipVertex, 3> input;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t v = indices[k];
-            input[k].clip = corners[k];
+            input[k].clip = clip[v];
             input[k].varyings.fill(0.0f);
             if (per_pixel) {
                 const glm::vec3& p = object.positions[v];
@@ -511,22 +560,34 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
             const ClipVertex* piece[3] = {&polygon[0], &polygon[k], &polygon[k + 1]};
             CornerVaryings varyings;
             for (int m = 0; m < 3; ++m) varyings[m] = piece[m]->varyings;
-            emit({piece[0]->clip, piece[1]->clip, piece[2]->clip}, source, indices, &varyings);
+            emit(to_window(piece[0]->clip, half_width, half_height),
+                 to_window(piece[1]->clip, half_width, half_height),
+                 to_window(piece[2]->clip, half_width, half_height), source, indices, &varyings);
         }
     }
 
     // The clipped pieces' varyings stay put from here on: link them.
-    for (RasterTriangle& tri : chunk.triangles)
+    for (ShadeTriangle& tri : chunk.shade)
         tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
 
-    // Binning: each band of rows lists the triangles that may touch it.
-    chunk.bands.resize(static_cast<std::size_t>(band_count));
-    for (auto& band : chunk.bands) band.clear();
-    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-        const RasterTriangle& tri = chunk.triangles[i];
-        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
-            chunk.bands[b].push_back(static_cast<std::uint32_t>(i));
+    // Binning: each band of rows gets a copy of the triangles that may touch
+    // it, in setup order (counted first, so the chunk's one array is sized
+    // exactly).
+    const std::size_t bands = static_cast<std::size_t>(band_count);
+    std::vector<std::uint32_t>& counts = scratch.band_count;
+    counts.assign(bands + 1, 0);
+    for (const RasterTriangle& tri : pending)
+        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b) ++counts[b + 1];
+    chunk.band_start.resize(bands + 1);
+    chunk.band_start[0] = 0;
+    for (std::size_t b = 0; b < bands; ++b) {
+        chunk.band_start[b + 1] = chunk.band_start[b] + counts[b + 1];
+        counts[b] = chunk.band_start[b];  // from here on: the next free place in band b
     }
+    chunk.binned.resize(chunk.band_start[bands]);
+    for (const RasterTriangle& tri : pending)
+        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
+            chunk.binned[counts[b]++] = tri;
 }
 
 // Rasterize stage for one band: the visibility buffer holds, per pixel, the
@@ -548,10 +609,13 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
     s.touched_end.assign(band_height, 0);
 
     for (const SetupChunk& chunk : chunks) {
-        for (std::uint32_t index : chunk.bands[band]) {
-            const RasterTriangle& tri = chunk.triangles[index];
-            const int y0 = std::max(tri.min_y, row_begin);
-            const int y1 = std::min(tri.max_y, row_end - 1);
+        const RasterTriangle* const first_triangle = chunk.binned.data() + chunk.band_start[band];
+        const RasterTriangle* const end_triangle = chunk.binned.data() + chunk.band_start[band + 1];
+        for (const RasterTriangle* t = first_triangle; t != end_triangle; ++t) {
+            const RasterTriangle& tri = *t;
+            const ShadeTriangle* const shade = &chunk.shade[tri.shade];
+            const int y0 = std::max<int>(tri.min_y, row_begin);
+            const int y1 = std::min<int>(tri.max_y, row_end - 1);
             if (y0 > y1) continue;
 
             // Edge k is opposite corner k: from corner k+1 to corner k+2.
@@ -617,7 +681,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                     const std::size_t i = row + static_cast<std::size_t>(x);
                     if (inverse_w <= s.depth[i]) continue;
                     s.depth[i] = inverse_w;
-                    s.visible[i] = &tri;
+                    s.visible[i] = shade;
                     s.weight1[i] = p1;  // divided by 1/w once, when shading
                     s.weight2[i] = p2;
                 }
@@ -660,7 +724,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     const int end = std::max(begin, s.touched_end[static_cast<std::size_t>(band_row)]);
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);
-        const RasterTriangle* tri = s.visible[i];
+        const ShadeTriangle* tri = s.visible[i];
         if (!tri) {
             flush();
             continue;
@@ -821,8 +885,8 @@ void Renderer::render_into(Image& image) {
         impl.background_row[i] = background[i % 3];
     for (BandScratch& scratch : impl.scratch) scratch.shaded_pixels = 0;
     impl.vertex_stage(width, height);
-    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
-        impl.setup(impl.chunks[c], width, height);
+    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int worker) {
+        impl.setup(impl.chunks[c], impl.scratch[static_cast<std::size_t>(worker)], width, height);
     });
     impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
         impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
