@@ -127,6 +127,9 @@ constexpr int band_height = 16;
 // Spans of one triangle shorter than this are interpolated pixel by pixel.
 constexpr std::size_t short_span = 8;
 constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
+// Triangles at most this many pixels wide find each row's covered pixels by
+// testing them; wider ones solve the span from the edge functions.
+constexpr std::int64_t narrow_triangle = 8;
 
 // Window coordinates in fixed point stay below this (the guard band keeps
 // them within 3 image sizes of 16384 pixels, far less), so that edge
@@ -155,9 +158,8 @@ struct WindowCorner {
     bool valid = false;        // false: beyond the fixed-point range (degenerate input)
 };
 
-// The setup of what the fragment stage needs of a triangle: where its
-// varyings come from (the mesh's vertices, or a clipped polygon's own).
-// Looked up once per span of visible pixels, not by the visibility pass.
+// What the fragment stage needs of a triangle: where its varyings come from
+// (the mesh's vertices, or a clipped polygon's own).
 struct ShadeTriangle {
     std::uint32_t object;
     std::uint32_t source;                   // triangle index within the object
@@ -166,28 +168,33 @@ struct ShadeTriangle {
     const CornerVaryings* varyings;         // &SetupChunk::clipped[clipped], or null
 };
 
-// A triangle ready to rasterize: fixed-point window coordinates and 1/w per
-// corner, ordered so that its doubled area is positive, its pixel bounds
-// (inclusive, inside the image: at most 16384, so 16 bits), and its
-// ShadeTriangle within the chunk. Setup copies it into every band it may
-// touch, so the visibility pass reads its band's triangles in one stream
-// (48 bytes each) instead of fetching them by index.
+// What the visibility pass needs: fixed-point window coordinates and the
+// perspective weight of each corner, ordered so that its doubled area is
+// positive, and its pixel bounds (inclusive, inside the image: at most
+// 16384, so 16 bits).
 struct RasterTriangle {
     std::array<std::int32_t, 3> x, y;
-    std::array<float, 3> inverse_w;
+    std::array<float, 3> weight;  // 1/w of each corner over the doubled area
     std::int16_t min_x, max_x, min_y, max_y;
-    std::uint32_t shade;                    // index into SetupChunk::shade
+};
+
+// A triangle ready to rasterize, as binned: setup copies it into every band
+// it may touch, so that a band's triangles are read in one stream, and the
+// visibility buffer points at the copy's ShadeTriangle, read again (from
+// cache, not memory) when the band is shaded.
+struct BinnedTriangle {
+    RasterTriangle raster;
+    ShadeTriangle shade;
 };
 
 // One setup job's output, kept between frames to reuse its memory.
 struct SetupChunk {
     std::uint32_t object = 0;
     std::size_t begin = 0, end = 0;  // triangle range within the object
-    std::vector<ShadeTriangle> shade;
     std::vector<CornerVaryings> clipped;
     // The triangles of each band of rows, band after band, each band's in
     // setup order: band b's are binned[band_start[b] .. band_start[b + 1]).
-    std::vector<RasterTriangle> binned;
+    std::vector<BinnedTriangle> binned;
     std::vector<std::uint32_t> band_start;
 };
 
@@ -228,7 +235,7 @@ struct BandScratch {
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
     // Setup's triangles of the chunk at hand, before they are binned.
-    std::vector<RasterTriangle> pending;
+    std::vector<BinnedTriangle> pending;
     std::vector<std::uint32_t> band_count;
 };
 
@@ -458,9 +465,8 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
                                                                    : 0;
     const float half_width = 0.5f * static_cast<float>(width);
     const float half_height = 0.5f * static_cast<float>(height);
-    std::vector<RasterTriangle>& pending = scratch.pending;
+    std::vector<BinnedTriangle>& pending = scratch.pending;
     pending.clear();
-    chunk.shade.clear();
     chunk.clipped.clear();
 
     bool flat_done = false;  // the current source triangle's flat colour is computed
@@ -478,7 +484,10 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         RasterTriangle raster;
         raster.x = {c0.x, c2.x, c1.x};
         raster.y = {c0.y, c2.y, c1.y};
-        raster.inverse_w = {c0.inverse_w, c2.inverse_w, c1.inverse_w};
+        // The doubled area in the rasterizer's order of corners is −area.
+        const float inverse_area = 1.0f / static_cast<float>(-area);
+        raster.weight = {inverse_area * c0.inverse_w, inverse_area * c2.inverse_w,
+                         inverse_area * c1.inverse_w};
 
         // Pixel i covers the centre i + 0.5.
         auto first_pixel = [](std::int64_t lo) {
@@ -519,12 +528,17 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
             shade.clipped = static_cast<std::int32_t>(chunk.clipped.size());
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
-        raster.shade = static_cast<std::uint32_t>(chunk.shade.size());
-        chunk.shade.push_back(shade);
-        pending.push_back(raster);
+        pending.push_back({raster, shade});
     };
 
+    // Welded meshes number their vertices in no order the triangles follow,
+    // so the corners' loads would miss the cache: fetch them ahead.
+    constexpr std::size_t prefetch_ahead = 16;
     for (std::size_t t = chunk.begin; t < chunk.end; ++t) {
+        if (t + prefetch_ahead < chunk.end) {
+            const auto& ahead = object.triangles[t + prefetch_ahead];
+            for (const std::uint32_t v : ahead) __builtin_prefetch(&window[v]);
+        }
         const auto& indices = object.triangles[t];
         const WindowCorner& w0 = window[indices[0]];
         const WindowCorner& w1 = window[indices[1]];
@@ -567,8 +581,10 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     }
 
     // The clipped pieces' varyings stay put from here on: link them.
-    for (ShadeTriangle& tri : chunk.shade)
+    for (BinnedTriangle& binned : pending) {
+        ShadeTriangle& tri = binned.shade;
         tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
+    }
 
     // Binning: each band of rows gets a copy of the triangles that may touch
     // it, in setup order (counted first, so the chunk's one array is sized
@@ -576,8 +592,10 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     const std::size_t bands = static_cast<std::size_t>(band_count);
     std::vector<std::uint32_t>& counts = scratch.band_count;
     counts.assign(bands + 1, 0);
-    for (const RasterTriangle& tri : pending)
+    for (const BinnedTriangle& binned : pending) {
+        const RasterTriangle& tri = binned.raster;
         for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b) ++counts[b + 1];
+    }
     chunk.band_start.resize(bands + 1);
     chunk.band_start[0] = 0;
     for (std::size_t b = 0; b < bands; ++b) {
@@ -585,9 +603,11 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         counts[b] = chunk.band_start[b];  // from here on: the next free place in band b
     }
     chunk.binned.resize(chunk.band_start[bands]);
-    for (const RasterTriangle& tri : pending)
+    for (const BinnedTriangle& binned : pending) {
+        const RasterTriangle& tri = binned.raster;
         for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
-            chunk.binned[counts[b]++] = tri;
+            chunk.binned[counts[b]++] = binned;
+    }
 }
 
 // Rasterize stage for one band: the visibility buffer holds, per pixel, the
@@ -609,11 +629,11 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
     s.touched_end.assign(band_height, 0);
 
     for (const SetupChunk& chunk : chunks) {
-        const RasterTriangle* const first_triangle = chunk.binned.data() + chunk.band_start[band];
-        const RasterTriangle* const end_triangle = chunk.binned.data() + chunk.band_start[band + 1];
-        for (const RasterTriangle* t = first_triangle; t != end_triangle; ++t) {
-            const RasterTriangle& tri = *t;
-            const ShadeTriangle* const shade = &chunk.shade[tri.shade];
+        const BinnedTriangle* const first_triangle = chunk.binned.data() + chunk.band_start[band];
+        const BinnedTriangle* const end_triangle = chunk.binned.data() + chunk.band_start[band + 1];
+        for (const BinnedTriangle* t = first_triangle; t != end_triangle; ++t) {
+            const RasterTriangle& tri = t->raster;
+            const ShadeTriangle* const shade = &t->shade;
             const int y0 = std::max<int>(tri.min_y, row_begin);
             const int y1 = std::min<int>(tri.max_y, row_end - 1);
             if (y0 > y1) continue;
@@ -636,13 +656,9 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                 const bool top_left = dy < 0 || (dy == 0 && dx > 0);
                 bias[k] = top_left ? 0 : -1;
             }
-            const std::int64_t doubled_area =
-                std::int64_t{tri.x[1] - tri.x[0]} * (tri.y[2] - tri.y[0]) -
-                std::int64_t{tri.y[1] - tri.y[0]} * (tri.x[2] - tri.x[0]);
-            const float inverse_area = 1.0f / static_cast<float>(doubled_area);
-            const float weight0 = inverse_area * tri.inverse_w[0];
-            const float weight1 = inverse_area * tri.inverse_w[1];
-            const float weight2 = inverse_area * tri.inverse_w[2];
+            const float weight0 = tri.weight[0];
+            const float weight1 = tri.weight[1];
+            const float weight2 = tri.weight[2];
 
             for (int y = y0; y <= y1; ++y) {
                 const std::int64_t rows = y - y0;
@@ -652,7 +668,28 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                 // functions (each is linear in x): the pixels whose
                 // e_k + step_x·(x − min_x) ≥ 0 for all k, so no per-pixel test.
                 std::int64_t first = 0, last = tri.max_x - tri.min_x;
-                for (int k = 0; k < 3 && first <= last; ++k) {
+                const bool narrow = last < narrow_triangle;
+                if (narrow) {
+                    // A narrow triangle (most, in meshes of 100k triangles
+                    // and more): the same pixels, found by testing each
+                    // (the covered ones are consecutive), without the
+                    // divisions.
+                    std::int64_t found_first = -1, found_last = -1;
+                    std::int64_t e0 = e[0], e1 = e[1], e2 = e[2];
+                    for (std::int64_t x = 0; x <= last; ++x) {
+                        if ((e0 | e1 | e2) >= 0) {  // all three ≥ 0
+                            if (found_first < 0) found_first = x;
+                            found_last = x;
+                        } else if (found_first >= 0) {
+                            break;
+                        }
+                        e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
+                    }
+                    if (found_first < 0) continue;
+                    first = found_first;
+                    last = found_last;
+                }
+                for (int k = 0; k < 3 && !narrow && first <= last; ++k) {
                     if (step_x[k] > 0) {
                         if (e[k] < 0) first = std::max(first, (-e[k] + step_x[k] - 1) / step_x[k]);
                     } else if (step_x[k] < 0) {
