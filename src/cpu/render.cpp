@@ -37,6 +37,10 @@
 #include "cpu/thread_pool.hpp"
 #include "scene/float_range.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace litkit {
 
 namespace {
@@ -130,6 +134,9 @@ constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
 // Triangles at most this many pixels wide find each row's covered pixels by
 // testing them; wider ones solve the span from the edge functions.
 constexpr std::int64_t narrow_triangle = 8;
+// Triangles whose corners lie within this many fixed-point units of each
+// other, both ways (8 pixels), step their edge functions in 32-bit SIMD lanes.
+constexpr std::int32_t small_triangle = 8 * static_cast<std::int32_t>(subpixel_one);
 
 // Window coordinates in fixed point stay below this (the guard band keeps
 // them within 3 image sizes of 16384 pixels, far less), so that edge
@@ -176,6 +183,9 @@ struct RasterTriangle {
     std::array<std::int32_t, 3> x, y;
     std::array<float, 3> weight;  // 1/w of each corner over the doubled area
     std::int16_t min_x, max_x, min_y, max_y;
+    // At most small_triangle (in fixed point) wide and high: its edge
+    // functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its box).
+    bool small;
 };
 
 // A triangle ready to rasterize, as binned: setup copies it into every band
@@ -507,6 +517,8 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         raster.max_x = static_cast<std::int16_t>(right);
         raster.min_y = static_cast<std::int16_t>(top);
         raster.max_y = static_cast<std::int16_t>(bottom);
+        raster.small = std::int64_t{max_x} - min_x <= small_triangle &&
+                       std::int64_t{max_y} - min_y <= small_triangle;
         if (object.shading == Shading::Flat && !flat_done) {
             // docs/spec.md §3 flat: lit once, at the centroid of the whole (unclipped)
             // triangle, with its face normal.
@@ -660,6 +672,104 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const float weight1 = tri.weight[1];
             const float weight2 = tri.weight[2];
 
+#if defined(__SSE2__)
+            if (tri.small) {
+                // The same pixels and values as below, with the three edge
+                // functions in the lanes of one 32-bit vector (exact: they
+                // stay far inside 32 bits for a small triangle, and a float
+                // made from the same integer is the same float).
+                auto lanes = [](const std::array<std::int64_t, 3>& v) {
+                    return _mm_setr_epi32(static_cast<std::int32_t>(v[0]), static_cast<std::int32_t>(v[1]),
+                                          static_cast<std::int32_t>(v[2]), 0);
+                };
+                const __m128i sx = lanes(step_x), sy = lanes(step_y), bv = lanes(bias);
+                const __m128 wv = _mm_setr_ps(weight0, weight1, weight2, 0.0f);
+                auto outside = [](__m128i e) {  // some edge function < 0
+                    return (_mm_movemask_ps(_mm_castsi128_ps(e)) & 7) != 0;
+                };
+                const int span = tri.max_x - tri.min_x;
+                __m128i r = _mm_add_epi32(lanes(origin), bv);  // at the row's first pixel
+                std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
+                                  static_cast<std::size_t>(tri.min_x);
+                for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
+                    __m128i e = r;
+                    r = _mm_add_epi32(r, sy);
+                    int x = 0;
+                    while (x <= span && outside(e)) {
+                        e = _mm_add_epi32(e, sx);
+                        ++x;
+                    }
+                    if (x <= span) {
+                        const int first = x;
+                        do {
+                            const __m128 p = _mm_mul_ps(_mm_cvtepi32_ps(_mm_sub_epi32(e, bv)), wv);
+                            const __m128 p1 = _mm_shuffle_ps(p, p, 1);
+                            const __m128 p2 = _mm_movehl_ps(p, p);
+                            // (p0 + p1) + p2, as below
+                            const float inverse_w = _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, p1), p2));
+                            const std::size_t i = row + static_cast<std::size_t>(x);
+                            if (!(inverse_w <= s.depth[i])) {  // nearer (or NaN), as below
+                                s.depth[i] = inverse_w;
+                                s.visible[i] = shade;
+                                s.weight1[i] = _mm_cvtss_f32(p1);
+                                s.weight2[i] = _mm_cvtss_f32(p2);
+                            }
+                            e = _mm_add_epi32(e, sx);
+                            ++x;
+                        } while (x <= span && !outside(e));
+                        s.touched_begin[band_row] = std::min(s.touched_begin[band_row], tri.min_x + first);
+                        s.touched_end[band_row] = std::max(s.touched_end[band_row], tri.min_x + x);
+                    }
+                    row += width;
+                }
+                continue;
+            }
+#endif
+            if (tri.max_x - tri.min_x < narrow_triangle) {
+                // A narrow triangle (all of them, in meshes of 100k
+                // triangles and more): the same pixels and values as below,
+                // found by stepping the edge functions from pixel to pixel
+                // (the covered ones of a row are consecutive) instead of
+                // three 64-bit divisions a row.
+                const std::int64_t sx0 = step_x[0], sx1 = step_x[1], sx2 = step_x[2];
+                const std::int64_t b0 = bias[0], b1 = bias[1], b2 = bias[2];
+                const int span = tri.max_x - tri.min_x;
+                // The biased edge functions at the row's first pixel.
+                std::int64_t r0 = origin[0] + b0, r1 = origin[1] + b1, r2 = origin[2] + b2;
+                std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
+                                  static_cast<std::size_t>(tri.min_x);
+                for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
+                    std::int64_t e0 = r0, e1 = r1, e2 = r2;
+                    r0 += step_y[0], r1 += step_y[1], r2 += step_y[2];
+                    int x = 0;
+                    while (x <= span && (e0 | e1 | e2) < 0) {  // some edge < 0: outside
+                        e0 += sx0, e1 += sx1, e2 += sx2;
+                        ++x;
+                    }
+                    if (x <= span) {
+                        const int first = x;
+                        do {
+                            const float p0 = static_cast<float>(e0 - b0) * weight0;
+                            const float p1 = static_cast<float>(e1 - b1) * weight1;
+                            const float p2 = static_cast<float>(e2 - b2) * weight2;
+                            const float inverse_w = p0 + p1 + p2;
+                            const std::size_t i = row + static_cast<std::size_t>(x);
+                            if (!(inverse_w <= s.depth[i])) {  // nearer (or NaN), as below
+                                s.depth[i] = inverse_w;
+                                s.visible[i] = shade;
+                                s.weight1[i] = p1;
+                                s.weight2[i] = p2;
+                            }
+                            e0 += sx0, e1 += sx1, e2 += sx2;
+                            ++x;
+                        } while (x <= span && (e0 | e1 | e2) >= 0);
+                        s.touched_begin[band_row] = std::min(s.touched_begin[band_row], tri.min_x + first);
+                        s.touched_end[band_row] = std::max(s.touched_end[band_row], tri.min_x + x);
+                    }
+                    row += width;
+                }
+                continue;
+            }
             for (int y = y0; y <= y1; ++y) {
                 const std::int64_t rows = y - y0;
                 std::array<std::int64_t, 3> e;
@@ -668,28 +778,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                 // functions (each is linear in x): the pixels whose
                 // e_k + step_x·(x − min_x) ≥ 0 for all k, so no per-pixel test.
                 std::int64_t first = 0, last = tri.max_x - tri.min_x;
-                const bool narrow = last < narrow_triangle;
-                if (narrow) {
-                    // A narrow triangle (most, in meshes of 100k triangles
-                    // and more): the same pixels, found by testing each
-                    // (the covered ones are consecutive), without the
-                    // divisions.
-                    std::int64_t found_first = -1, found_last = -1;
-                    std::int64_t e0 = e[0], e1 = e[1], e2 = e[2];
-                    for (std::int64_t x = 0; x <= last; ++x) {
-                        if ((e0 | e1 | e2) >= 0) {  // all three ≥ 0
-                            if (found_first < 0) found_first = x;
-                            found_last = x;
-                        } else if (found_first >= 0) {
-                            break;
-                        }
-                        e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
-                    }
-                    if (found_first < 0) continue;
-                    first = found_first;
-                    last = found_last;
-                }
-                for (int k = 0; k < 3 && !narrow && first <= last; ++k) {
+                for (int k = 0; k < 3 && first <= last; ++k) {
                     if (step_x[k] > 0) {
                         if (e[k] < 0) first = std::max(first, (-e[k] + step_x[k] - 1) / step_x[k]);
                     } else if (step_x[k] < 0) {
