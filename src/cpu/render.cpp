@@ -892,6 +892,52 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (run_length == 0) run_first = x;
         run_object = &object;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
+#if defined(__SSE2__)
+        if (count < short_span) {
+            // Small triangles: the formulas of interpolate_surface pixel by
+            // pixel (a SIMD call across pixels would mostly pad), with x, y
+            // and z in the lanes of one SSE vector: the same products and
+            // sums, in the same order, as the scalar code and the kernel.
+            __m128 corner_p[3], corner_n[3];
+            for (int k = 0; k < 3; ++k) {
+                if (tri->clipped < 0) {
+                    const glm::vec3& p = object.positions[tri->vertex[k]];
+                    const glm::vec3& n = object.normals[tri->vertex[k]];
+                    corner_p[k] = _mm_setr_ps(p.x, p.y, p.z, 0.0f);
+                    corner_n[k] = _mm_setr_ps(n.x, n.y, n.z, 0.0f);
+                } else {
+                    const auto& v = (*tri->varyings)[k];
+                    corner_p[k] = _mm_setr_ps(v[0], v[1], v[2], 0.0f);
+                    corner_n[k] = _mm_setr_ps(v[3], v[4], v[5], 0.0f);
+                }
+            }
+            auto store = [](__m128 v, float* x, float* y, float* z) {
+                _mm_store_ss(x, v);
+                _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
+                _mm_store_ss(z, _mm_movehl_ps(v, v));
+            };
+            const bool faceted = object.shading == Shading::Faceted;
+            for (std::size_t k = 0; k < count; ++k) {
+                const float w = 1.0f / s.depth[i + k];
+                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
+                const float q0 = 1.0f - q1 - q2;
+                const __m128 a = _mm_set1_ps(q0), b = _mm_set1_ps(q1), c = _mm_set1_ps(q2);
+                const std::size_t at = run_length + k;
+                store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_p[0]), _mm_mul_ps(b, corner_p[1])),
+                                 _mm_mul_ps(c, corner_p[2])),
+                      &s.px[at], &s.py[at], &s.pz[at]);
+                if (faceted) {
+                    // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
+                    const glm::vec3& n = object.face_normals[tri->source];
+                    s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
+                } else {
+                    store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_n[0]), _mm_mul_ps(b, corner_n[1])),
+                                     _mm_mul_ps(c, corner_n[2])),
+                          &s.nx[at], &s.ny[at], &s.nz[at]);
+                }
+            }
+        } else
+#endif
         if (count < short_span) {
             // Small triangles: the scalar formulas, pixel by pixel (a SIMD
             // call would mostly pad); the same roundings as the kernel.
