@@ -211,9 +211,11 @@ struct SetupChunk {
 // Perspective divide, viewport and fixed point of one clip-space corner.
 WindowCorner to_window(const glm::vec4& c, float half_width, float half_height) {
     WindowCorner out;
-    const std::array<float, 6> d = plane_distances(c);
-    for (int plane = 0; plane < 6; ++plane)
-        out.outside |= static_cast<std::uint8_t>((d[plane] < 0.0f ? 1 : 0) << plane);
+    // plane_distances(c)[k] < 0, written out (the same sums and products).
+    const float band_w = guard_band * c.w;
+    out.outside = static_cast<std::uint8_t>(
+        (c.z + c.w < 0.0f ? 1 : 0) | (c.w - c.z < 0.0f ? 2 : 0) | (c.x + band_w < 0.0f ? 4 : 0) |
+        (band_w - c.x < 0.0f ? 8 : 0) | (c.y + band_w < 0.0f ? 16 : 0) | (band_w - c.y < 0.0f ? 32 : 0));
     const float inverse_w = 1.0f / c.w;
     // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
     const double window_x = (c.x * inverse_w + 1.0f) * half_width;
@@ -482,15 +484,15 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     bool flat_done = false;  // the current source triangle's flat colour is computed
     // Setup of one (piece of a) triangle from its window corners; nothing
     // when culled.
-    auto emit = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
-                    std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
-                    const CornerVaryings* varyings) {
-        if (!(c0.valid && c1.valid && c2.valid)) return;
-        // Doubled signed area in y-down window coordinates: a triangle
-        // counter-clockwise on screen (front-facing) has a negative one.
-        const std::int64_t area = std::int64_t{c1.x - c0.x} * (c2.y - c0.y) -
-                                  std::int64_t{c1.y - c0.y} * (c2.x - c0.x);
-        if (area >= 0) return;  // back face or zero area: culled
+    // Doubled signed area in y-down window coordinates: a triangle
+    // counter-clockwise on screen (front-facing) has a negative one.
+    auto doubled_area = [](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2) {
+        return std::int64_t{c1.x - c0.x} * (c2.y - c0.y) - std::int64_t{c1.y - c0.y} * (c2.x - c0.x);
+    };
+    // Setup of a front-facing (area < 0) piece with valid corners.
+    auto emit_front = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
+                          std::int64_t area, std::uint32_t source,
+                          const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
         RasterTriangle raster;
         raster.x = {c0.x, c2.x, c1.x};
         raster.y = {c0.y, c2.y, c1.y};
@@ -542,6 +544,14 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         }
         pending.push_back({raster, shade});
     };
+    auto emit = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
+                    std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
+                    const CornerVaryings* varyings) {
+        if (!(c0.valid && c1.valid && c2.valid)) return;
+        const std::int64_t area = doubled_area(c0, c1, c2);
+        if (area >= 0) return;  // back face or zero area: culled
+        emit_front(c0, c1, c2, area, source, vertex, varyings);
+    };
 
     // Welded meshes number their vertices in no order the triangles follow,
     // so the corners' loads would miss the cache: fetch them ahead.
@@ -561,7 +571,11 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         const std::uint32_t source = static_cast<std::uint32_t>(t);
         flat_done = false;
         if ((w0.outside | w1.outside | w2.outside) == 0) {
-            emit(w0, w1, w2, source, indices, nullptr);
+            // emit(), with the back faces (half of a closed mesh) culled here.
+            if (!(w0.valid && w1.valid && w2.valid)) continue;
+            const std::int64_t area = doubled_area(w0, w1, w2);
+            if (area >= 0) continue;  // back face or zero area: culled
+            emit_front(w0, w1, w2, area, source, indices, nullptr);
             continue;
         }
         // Clipping: the pieces carry their own varyings, interpolated in
