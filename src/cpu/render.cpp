@@ -912,17 +912,19 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // pixel (a SIMD call across pixels would mostly pad), with x, y
             // and z in the lanes of one SSE vector: the same products and
             // sums, in the same order, as the scalar code and the kernel.
+            auto load3 = [](const float* v) {  // (v[0], v[1], v[2], 0), reading 3 floats
+                const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(v));
+                return _mm_movelh_ps(xy, _mm_load_ss(v + 2));
+            };
             __m128 corner_p[3], corner_n[3];
             for (int k = 0; k < 3; ++k) {
                 if (tri->clipped < 0) {
-                    const glm::vec3& p = object.positions[tri->vertex[k]];
-                    const glm::vec3& n = object.normals[tri->vertex[k]];
-                    corner_p[k] = _mm_setr_ps(p.x, p.y, p.z, 0.0f);
-                    corner_n[k] = _mm_setr_ps(n.x, n.y, n.z, 0.0f);
+                    corner_p[k] = load3(&object.positions[tri->vertex[k]].x);
+                    corner_n[k] = load3(&object.normals[tri->vertex[k]].x);
                 } else {
                     const auto& v = (*tri->varyings)[k];
-                    corner_p[k] = _mm_setr_ps(v[0], v[1], v[2], 0.0f);
-                    corner_n[k] = _mm_setr_ps(v[3], v[4], v[5], 0.0f);
+                    corner_p[k] = load3(&v[0]);
+                    corner_n[k] = load3(&v[3]);
                 }
             }
             auto store = [](__m128 v, float* x, float* y, float* z) {
