@@ -496,10 +496,6 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         RasterTriangle raster;
         raster.x = {c0.x, c2.x, c1.x};
         raster.y = {c0.y, c2.y, c1.y};
-        // The doubled area in the rasterizer's order of corners is −area.
-        const float inverse_area = 1.0f / static_cast<float>(-area);
-        raster.weight = {inverse_area * c0.inverse_w, inverse_area * c2.inverse_w,
-                         inverse_area * c1.inverse_w};
 
         // Pixel i covers the centre i + 0.5.
         auto first_pixel = [](std::int64_t lo) {
@@ -515,6 +511,10 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         const int top = std::max(0, first_pixel(min_y));
         const int bottom = std::min(height - 1, last_pixel(max_y));
         if (left > right || top > bottom) return;
+        // The doubled area in the rasterizer's order of corners is −area.
+        const float inverse_area = 1.0f / static_cast<float>(-area);
+        raster.weight = {inverse_area * c0.inverse_w, inverse_area * c2.inverse_w,
+                         inverse_area * c1.inverse_w};
         raster.min_x = static_cast<std::int16_t>(left);
         raster.max_x = static_cast<std::int16_t>(right);
         raster.min_y = static_cast<std::int16_t>(top);
