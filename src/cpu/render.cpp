@@ -810,15 +810,21 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                     std::max(s.touched_end[band_row], tri.min_x + static_cast<int>(last) + 1);
                 const std::size_t row = static_cast<std::size_t>(band_row) * width +
                                         static_cast<std::size_t>(tri.min_x);
-                for (std::int64_t x = first; x <= last; ++x) {
+                // The unbiased edge functions at pixel x, stepped along the row.
+                std::int64_t v0 = e[0] - bias[0] + first * step_x[0];
+                std::int64_t v1 = e[1] - bias[1] + first * step_x[1];
+                std::int64_t v2 = e[2] - bias[2] + first * step_x[2];
+                const std::int64_t sx0 = step_x[0], sx1 = step_x[1], sx2 = step_x[2];
+                const std::size_t row_last = row + static_cast<std::size_t>(last);
+                for (std::size_t i = row + static_cast<std::size_t>(first); i <= row_last;
+                     ++i, v0 += sx0, v1 += sx1, v2 += sx2) {
                     // Screen-space barycentrics scaled by 1/w: their sum is
                     // the interpolated 1/w (1 / view depth, linear on screen).
-                    const float p0 = static_cast<float>(e[0] - bias[0] + x * step_x[0]) * weight0;
-                    const float p1 = static_cast<float>(e[1] - bias[1] + x * step_x[1]) * weight1;
-                    const float p2 = static_cast<float>(e[2] - bias[2] + x * step_x[2]) * weight2;
+                    const float p0 = static_cast<float>(v0) * weight0;
+                    const float p1 = static_cast<float>(v1) * weight1;
+                    const float p2 = static_cast<float>(v2) * weight2;
                     const float inverse_w = p0 + p1 + p2;
                     // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
-                    const std::size_t i = row + static_cast<std::size_t>(x);
                     if (inverse_w <= s.depth[i]) continue;
                     s.depth[i] = inverse_w;
                     s.visible[i] = shade;
