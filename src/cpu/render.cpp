@@ -37,6 +37,10 @@
 #include "cpu/thread_pool.hpp"
 #include "scene/float_range.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace litkit {
 
 namespace {
@@ -127,6 +131,12 @@ constexpr int band_height = 16;
 // Spans of one triangle shorter than this are interpolated pixel by pixel.
 constexpr std::size_t short_span = 8;
 constexpr std::size_t setup_chunk = 2048;  // triangles per setup job
+// Triangles at most this many pixels wide find each row's covered pixels by
+// testing them; wider ones solve the span from the edge functions.
+constexpr std::int64_t narrow_triangle = 8;
+// Triangles whose corners lie within this many fixed-point units of each
+// other, both ways (8 pixels), step their edge functions in 32-bit SIMD lanes.
+constexpr std::int32_t small_triangle = 8 * static_cast<std::int32_t>(subpixel_one);
 
 // Window coordinates in fixed point stay below this (the guard band keeps
 // them within 3 image sizes of 16384 pixels, far less), so that edge
@@ -144,39 +154,101 @@ std::int32_t round_to_int(double v) {
 // Varyings of the corners of a piece of a clipped triangle.
 using CornerVaryings = std::array<std::array<float, max_varyings>, 3>;
 
-// A triangle ready to rasterize: fixed-point window coordinates and 1/w per
-// corner, ordered so that its doubled area is positive, and where its
-// varyings come from (the mesh's vertices, or a clipped polygon's own).
-struct RasterTriangle {
-    std::array<std::int32_t, 3> x, y;
-    std::array<float, 3> inverse_w;
+// A corner in window coordinates: fixed-point x, y and 1/w, and the clip
+// planes it lies outside of (bit k: plane_distances(c)[k] < 0). Unclipped
+// triangles take their corners from the vertex stage, which makes one per
+// mesh vertex; clipped pieces make theirs in setup, with the same function.
+struct WindowCorner {
+    std::int32_t x = 0, y = 0;
+    float inverse_w = 0.0f;
+    std::uint8_t outside = 0;  // clip planes, one bit each
+    bool valid = false;        // false: beyond the fixed-point range (degenerate input)
+};
+
+// What the fragment stage needs of a triangle: where its varyings come from
+// (the mesh's vertices, or a clipped polygon's own).
+struct ShadeTriangle {
     std::uint32_t object;
     std::uint32_t source;                   // triangle index within the object
     std::array<std::uint32_t, 3> vertex;    // mesh vertices, corner by corner
     std::int32_t clipped;                   // index into SetupChunk::clipped, or −1
     const CornerVaryings* varyings;         // &SetupChunk::clipped[clipped], or null
-    std::int32_t min_x, max_x, min_y, max_y;  // pixel bounds, inclusive, inside the image
+};
+
+// What the visibility pass needs: fixed-point window coordinates and the
+// perspective weight of each corner, ordered so that its doubled area is
+// positive, and its pixel bounds (inclusive, inside the image: at most
+// 16384, so 16 bits).
+struct RasterTriangle {
+    std::array<std::int32_t, 3> x, y;
+    std::array<float, 3> weight;  // 1/w of each corner over the doubled area
+    std::int16_t min_x, max_x, min_y, max_y;
+    // At most small_triangle (in fixed point) wide and high: its edge
+    // functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its box).
+    bool small;
+};
+
+// A triangle ready to rasterize, as binned: setup copies it into every band
+// it may touch, so that a band's triangles are read in one stream, and the
+// visibility buffer points at the copy's ShadeTriangle, read again (from
+// cache, not memory) when the band is shaded.
+struct BinnedTriangle {
+    RasterTriangle raster;
+    ShadeTriangle shade;
 };
 
 // One setup job's output, kept between frames to reuse its memory.
 struct SetupChunk {
     std::uint32_t object = 0;
     std::size_t begin = 0, end = 0;  // triangle range within the object
-    std::vector<RasterTriangle> triangles;
     std::vector<CornerVaryings> clipped;
-    std::vector<std::vector<std::uint32_t>> bands;  // indices into `triangles`, per band
+    // The triangles of each band of rows, band after band, each band's in
+    // setup order: band b's are binned[band_start[b] .. band_start[b + 1]).
+    std::vector<BinnedTriangle> binned;
+    std::vector<std::uint32_t> band_start;
 };
+
+// Perspective divide, viewport and fixed point of one clip-space corner.
+WindowCorner to_window(const glm::vec4& c, float half_width, float half_height) {
+    WindowCorner out;
+    // plane_distances(c)[k] < 0, written out (the same sums and products).
+    const float band_w = guard_band * c.w;
+    out.outside = static_cast<std::uint8_t>(
+        (c.z + c.w < 0.0f ? 1 : 0) | (c.w - c.z < 0.0f ? 2 : 0) | (c.x + band_w < 0.0f ? 4 : 0) |
+        (band_w - c.x < 0.0f ? 8 : 0) | (c.y + band_w < 0.0f ? 16 : 0) | (band_w - c.y < 0.0f ? 32 : 0));
+    const float inverse_w = 1.0f / c.w;
+    // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
+    const double window_x = (c.x * inverse_w + 1.0f) * half_width;
+    const double window_y = (1.0f - c.y * inverse_w) * half_height;
+    // The guard band keeps every corner within a few image sizes of the
+    // picture; only degenerate input (coordinates near a float's limit,
+    // where clipping loses all precision) can leave it, and a triangle
+    // with such a corner is dropped rather than turned into an integer that
+    // overflows.
+    const double fixed_x = window_x * subpixel_one, fixed_y = window_y * subpixel_one;
+    if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
+          std::abs(fixed_y) < largest_fixed_coordinate))
+        return out;
+    out.x = round_to_int(fixed_x);
+    out.y = round_to_int(fixed_y);
+    out.inverse_w = inverse_w;
+    out.valid = true;
+    return out;
+}
 
 // Per-thread scratch for one band: the visibility buffer (nearest triangle
 // and its perspective-correct weights per pixel) and one row of colours.
 struct BandScratch {
     std::vector<float> depth;                    // 1/w; 0 = nothing drawn
-    std::vector<const RasterTriangle*> visible;  // nullptr = background
+    std::vector<const ShadeTriangle*> visible;   // nullptr = background
     std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
     std::vector<float> r, g, b;                  // one row of intensities
     std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
+    // Setup's triangles of the chunk at hand, before they are binned.
+    std::vector<BinnedTriangle> pending;
+    std::vector<std::uint32_t> band_count;
 };
 
 const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
@@ -219,6 +291,7 @@ struct Renderer::Impl {
 
     // Per-frame state, kept between frames to avoid reallocating.
     std::vector<std::vector<glm::vec4>> clip_positions;  // per object, per vertex
+    std::vector<std::vector<WindowCorner>> window_corners;  // per object, per vertex
     std::vector<std::vector<glm::vec3>> vertex_colors;   // Gouraud, per object
     std::vector<std::vector<glm::vec3>> flat_colors;     // flat, per object, per triangle
     std::vector<SetupChunk> chunks;
@@ -243,7 +316,7 @@ struct Renderer::Impl {
     void prepare();
     void prepare_surfaces();
     void vertex_stage(int width, int height);
-    void setup(SetupChunk& chunk, int width, int height);
+    void setup(SetupChunk& chunk, BandScratch& scratch, int width, int height);
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
@@ -253,7 +326,7 @@ namespace {
 
 // Phong shading's varyings at a pixel: p and N mixed from the corners (the
 // mesh's, or a clipped piece's) with the perspective-correct weights.
-inline void interpolate_surface(const PreparedObject& object, const RasterTriangle& tri, float q0,
+inline void interpolate_surface(const PreparedObject& object, const ShadeTriangle& tri, float q0,
                                 float q1, float q2, glm::vec3& p, glm::vec3& n) {
     if (tri.clipped < 0) {
         p = q0 * object.positions[tri.vertex[0]] + q1 * object.positions[tri.vertex[1]] +
@@ -277,7 +350,7 @@ inline void interpolate_surface(const PreparedObject& object, const RasterTriang
 // shaded (so the hot loop carries no test for it), with the fragment stage's
 // own formulas.
 void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) const {
-    const RasterTriangle* tri = s.visible[i];
+    const ShadeTriangle* tri = s.visible[i];
     const float w = 1.0f / s.depth[i];
     const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
     probed.hit = true;
@@ -345,6 +418,7 @@ void Renderer::Impl::prepare() {
         }
     }
     clip_positions.resize(objects.size());
+    window_corners.resize(objects.size());
     vertex_colors.resize(objects.size());
     flat_colors.resize(objects.size());
     scratch.resize(static_cast<std::size_t>(pool.size()));
@@ -370,12 +444,17 @@ void Renderer::Impl::vertex_stage(int width, int height) {
         const PreparedObject& object = objects[o];
         std::vector<glm::vec4>& clip = clip_positions[o];
         clip.resize(object.positions.size());
+        std::vector<WindowCorner>& window = window_corners[o];
+        window.resize(object.positions.size());
+        const float half_width = 0.5f * static_cast<float>(width);
+        const float half_height = 0.5f * static_cast<float>(height);
         std::vector<glm::vec3>& colors = vertex_colors[o];
         if (object.shading == Shading::Gouraud) colors.resize(object.positions.size());
         pool.parallel_for((clip.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
             const std::size_t end = std::min(clip.size(), (c + 1) * chunk);
             for (std::size_t i = c * chunk; i < end; ++i) {
                 clip[i] = view_projection * glm::vec4(object.positions[i], 1.0f);
+                window[i] = to_window(clip[i], half_width, half_height);
                 if (object.shading == Shading::Gouraud)
                     colors[i] = light_with(object.reflection, lights, object.material,
                                            object.positions[i], object.normals[i], eye);
@@ -388,52 +467,35 @@ void Renderer::Impl::vertex_stage(int width, int height) {
 }
 
 // Clip and setup stages for one range of triangles, then binning to bands.
-void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
+void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, int height) {
     const PreparedObject& object = objects[chunk.object];
     const std::vector<glm::vec4>& clip = clip_positions[chunk.object];
+    const std::vector<WindowCorner>& window = window_corners[chunk.object];
     const bool per_pixel = object.shading == Shading::Phong || object.shading == Shading::Faceted;
     const int varying_count = per_pixel                            ? 6
                               : object.shading == Shading::Gouraud ? 3
                                                                    : 0;
     const float half_width = 0.5f * static_cast<float>(width);
     const float half_height = 0.5f * static_cast<float>(height);
-    chunk.triangles.clear();
+    std::vector<BinnedTriangle>& pending = scratch.pending;
+    pending.clear();
     chunk.clipped.clear();
 
     bool flat_done = false;  // the current source triangle's flat colour is computed
-    // Viewport and setup of one (piece of a) triangle; false when culled.
-    auto emit = [&](const std::array<glm::vec4, 3>& corners, std::uint32_t source,
-                    const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
+    // Setup of one (piece of a) triangle from its window corners; nothing
+    // when culled.
+    // Doubled signed area in y-down window coordinates: a triangle
+    // counter-clockwise on screen (front-facing) has a negative one.
+    auto doubled_area = [](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2) {
+        return std::int64_t{c1.x - c0.x} * (c2.y - c0.y) - std::int64_t{c1.y - c0.y} * (c2.x - c0.x);
+    };
+    // Setup of a front-facing (area < 0) piece with valid corners.
+    auto emit_front = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
+                          std::int64_t area, std::uint32_t source,
+                          const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
         RasterTriangle raster;
-        for (int m = 0; m < 3; ++m) {
-            const glm::vec4& c = corners[m];
-            const float inverse_w = 1.0f / c.w;
-            // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
-            const double window_x = (c.x * inverse_w + 1.0f) * half_width;
-            const double window_y = (1.0f - c.y * inverse_w) * half_height;
-            // The guard band keeps every corner within a few image sizes of
-            // the picture; only degenerate input (coordinates near a float's
-            // limit, where clipping loses all precision) can leave it, and
-            // such a piece is dropped rather than turned into an integer
-            // that overflows.
-            const double fixed_x = window_x * subpixel_one, fixed_y = window_y * subpixel_one;
-            if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
-                  std::abs(fixed_y) < largest_fixed_coordinate))
-                return;
-            raster.x[m] = round_to_int(fixed_x);
-            raster.y[m] = round_to_int(fixed_y);
-            raster.inverse_w[m] = inverse_w;
-        }
-        // Doubled signed area in y-down window coordinates: a triangle
-        // counter-clockwise on screen (front-facing) has a negative one.
-        const std::int64_t area =
-            std::int64_t{raster.x[1] - raster.x[0]} * (raster.y[2] - raster.y[0]) -
-            std::int64_t{raster.y[1] - raster.y[0]} * (raster.x[2] - raster.x[0]);
-        if (area >= 0) return;  // back face or zero area: culled
-        std::swap(raster.x[1], raster.x[2]);
-        std::swap(raster.y[1], raster.y[2]);
-        std::swap(raster.inverse_w[1], raster.inverse_w[2]);
-        raster.vertex = {vertex[0], vertex[2], vertex[1]};
+        raster.x = {c0.x, c2.x, c1.x};
+        raster.y = {c0.y, c2.y, c1.y};
 
         // Pixel i covers the centre i + 0.5.
         auto first_pixel = [](std::int64_t lo) {
@@ -444,13 +506,21 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         };
         const auto [min_x, max_x] = std::minmax({raster.x[0], raster.x[1], raster.x[2]});
         const auto [min_y, max_y] = std::minmax({raster.y[0], raster.y[1], raster.y[2]});
-        raster.min_x = std::max(0, first_pixel(min_x));
-        raster.max_x = std::min(width - 1, last_pixel(max_x));
-        raster.min_y = std::max(0, first_pixel(min_y));
-        raster.max_y = std::min(height - 1, last_pixel(max_y));
-        if (raster.min_x > raster.max_x || raster.min_y > raster.max_y) return;
-        raster.object = chunk.object;
-        raster.source = source;
+        const int left = std::max(0, first_pixel(min_x));
+        const int right = std::min(width - 1, last_pixel(max_x));
+        const int top = std::max(0, first_pixel(min_y));
+        const int bottom = std::min(height - 1, last_pixel(max_y));
+        if (left > right || top > bottom) return;
+        // The doubled area in the rasterizer's order of corners is −area.
+        const float inverse_area = 1.0f / static_cast<float>(-area);
+        raster.weight = {inverse_area * c0.inverse_w, inverse_area * c2.inverse_w,
+                         inverse_area * c1.inverse_w};
+        raster.min_x = static_cast<std::int16_t>(left);
+        raster.max_x = static_cast<std::int16_t>(right);
+        raster.min_y = static_cast<std::int16_t>(top);
+        raster.max_y = static_cast<std::int16_t>(bottom);
+        raster.small = std::int64_t{max_x} - min_x <= small_triangle &&
+                       std::int64_t{max_y} - min_y <= small_triangle;
         if (object.shading == Shading::Flat && !flat_done) {
             // docs/spec.md §3 flat: lit once, at the centroid of the whole (unclipped)
             // triangle, with its face normal.
@@ -462,31 +532,50 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
                            object.face_normals[source], scene.observer.position);
             flat_done = true;
         }
-        raster.clipped = -1;
+        ShadeTriangle shade;
+        shade.object = chunk.object;
+        shade.source = source;
+        shade.vertex = {vertex[0], vertex[2], vertex[1]};
+        shade.clipped = -1;
+        shade.varyings = nullptr;
         if (varyings) {
-            raster.clipped = static_cast<std::int32_t>(chunk.clipped.size());
+            shade.clipped = static_cast<std::int32_t>(chunk.clipped.size());
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
-        chunk.triangles.push_back(raster);
+        pending.push_back({raster, shade});
+    };
+    auto emit = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
+                    std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
+                    const CornerVaryings* varyings) {
+        if (!(c0.valid && c1.valid && c2.valid)) return;
+        const std::int64_t area = doubled_area(c0, c1, c2);
+        if (area >= 0) return;  // back face or zero area: culled
+        emit_front(c0, c1, c2, area, source, vertex, varyings);
     };
 
+    // Welded meshes number their vertices in no order the triangles follow,
+    // so the corners' loads would miss the cache: fetch them ahead.
+    constexpr std::size_t prefetch_ahead = 16;
     for (std::size_t t = chunk.begin; t < chunk.end; ++t) {
-        const auto& indices = object.triangles[t];
-        const std::array<glm::vec4, 3> corners = {clip[indices[0]], clip[indices[1]],
-                                                  clip[indices[2]]};
-        // Trivial accept and reject against the six clip planes.
-        bool all_inside = true, rejected = false;
-        for (int plane = 0; plane < 6 && !rejected; ++plane) {
-            int outside = 0;
-            for (const glm::vec4& c : corners) outside += plane_distances(c)[plane] < 0.0f;
-            rejected = outside == 3;
-            all_inside = all_inside && outside == 0;
+        if (t + prefetch_ahead < chunk.end) {
+            const auto& ahead = object.triangles[t + prefetch_ahead];
+            for (const std::uint32_t v : ahead) __builtin_prefetch(&window[v]);
         }
-        if (rejected) continue;
+        const auto& indices = object.triangles[t];
+        const WindowCorner& w0 = window[indices[0]];
+        const WindowCorner& w1 = window[indices[1]];
+        const WindowCorner& w2 = window[indices[2]];
+        // Trivial reject (all three corners outside one plane) and accept
+        // (no corner outside any) against the six clip planes.
+        if (w0.outside & w1.outside & w2.outside) continue;
         const std::uint32_t source = static_cast<std::uint32_t>(t);
         flat_done = false;
-        if (all_inside) {
-            emit(corners, source, indices, nullptr);
+        if ((w0.outside | w1.outside | w2.outside) == 0) {
+            // emit(), with the back faces (half of a closed mesh) culled here.
+            if (!(w0.valid && w1.valid && w2.valid)) continue;
+            const std::int64_t area = doubled_area(w0, w1, w2);
+            if (area >= 0) continue;  // back face or zero area: culled
+            emit_front(w0, w1, w2, area, source, indices, nullptr);
             continue;
         }
         // Clipping: the pieces carry their own varyings, interpolated in
@@ -494,7 +583,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
         std::array<ClipVertex, 3> input;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t v = indices[k];
-            input[k].clip = corners[k];
+            input[k].clip = clip[v];
             input[k].varyings.fill(0.0f);
             if (per_pixel) {
                 const glm::vec3& p = object.positions[v];
@@ -511,21 +600,39 @@ void Renderer::Impl::setup(SetupChunk& chunk, int width, int height) {
             const ClipVertex* piece[3] = {&polygon[0], &polygon[k], &polygon[k + 1]};
             CornerVaryings varyings;
             for (int m = 0; m < 3; ++m) varyings[m] = piece[m]->varyings;
-            emit({piece[0]->clip, piece[1]->clip, piece[2]->clip}, source, indices, &varyings);
+            emit(to_window(piece[0]->clip, half_width, half_height),
+                 to_window(piece[1]->clip, half_width, half_height),
+                 to_window(piece[2]->clip, half_width, half_height), source, indices, &varyings);
         }
     }
 
     // The clipped pieces' varyings stay put from here on: link them.
-    for (RasterTriangle& tri : chunk.triangles)
+    for (BinnedTriangle& binned : pending) {
+        ShadeTriangle& tri = binned.shade;
         tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
+    }
 
-    // Binning: each band of rows lists the triangles that may touch it.
-    chunk.bands.resize(static_cast<std::size_t>(band_count));
-    for (auto& band : chunk.bands) band.clear();
-    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-        const RasterTriangle& tri = chunk.triangles[i];
+    // Binning: each band of rows gets a copy of the triangles that may touch
+    // it, in setup order (counted first, so the chunk's one array is sized
+    // exactly).
+    const std::size_t bands = static_cast<std::size_t>(band_count);
+    std::vector<std::uint32_t>& counts = scratch.band_count;
+    counts.assign(bands + 1, 0);
+    for (const BinnedTriangle& binned : pending) {
+        const RasterTriangle& tri = binned.raster;
+        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b) ++counts[b + 1];
+    }
+    chunk.band_start.resize(bands + 1);
+    chunk.band_start[0] = 0;
+    for (std::size_t b = 0; b < bands; ++b) {
+        chunk.band_start[b + 1] = chunk.band_start[b] + counts[b + 1];
+        counts[b] = chunk.band_start[b];  // from here on: the next free place in band b
+    }
+    chunk.binned.resize(chunk.band_start[bands]);
+    for (const BinnedTriangle& binned : pending) {
+        const RasterTriangle& tri = binned.raster;
         for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
-            chunk.bands[b].push_back(static_cast<std::uint32_t>(i));
+            chunk.binned[counts[b]++] = binned;
     }
 }
 
@@ -548,10 +655,13 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
     s.touched_end.assign(band_height, 0);
 
     for (const SetupChunk& chunk : chunks) {
-        for (std::uint32_t index : chunk.bands[band]) {
-            const RasterTriangle& tri = chunk.triangles[index];
-            const int y0 = std::max(tri.min_y, row_begin);
-            const int y1 = std::min(tri.max_y, row_end - 1);
+        const BinnedTriangle* const first_triangle = chunk.binned.data() + chunk.band_start[band];
+        const BinnedTriangle* const end_triangle = chunk.binned.data() + chunk.band_start[band + 1];
+        for (const BinnedTriangle* t = first_triangle; t != end_triangle; ++t) {
+            const RasterTriangle& tri = t->raster;
+            const ShadeTriangle* const shade = &t->shade;
+            const int y0 = std::max<int>(tri.min_y, row_begin);
+            const int y1 = std::min<int>(tri.max_y, row_end - 1);
             if (y0 > y1) continue;
 
             // Edge k is opposite corner k: from corner k+1 to corner k+2.
@@ -572,14 +682,108 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                 const bool top_left = dy < 0 || (dy == 0 && dx > 0);
                 bias[k] = top_left ? 0 : -1;
             }
-            const std::int64_t doubled_area =
-                std::int64_t{tri.x[1] - tri.x[0]} * (tri.y[2] - tri.y[0]) -
-                std::int64_t{tri.y[1] - tri.y[0]} * (tri.x[2] - tri.x[0]);
-            const float inverse_area = 1.0f / static_cast<float>(doubled_area);
-            const float weight0 = inverse_area * tri.inverse_w[0];
-            const float weight1 = inverse_area * tri.inverse_w[1];
-            const float weight2 = inverse_area * tri.inverse_w[2];
+            const float weight0 = tri.weight[0];
+            const float weight1 = tri.weight[1];
+            const float weight2 = tri.weight[2];
 
+#if defined(__SSE2__)
+            if (tri.small) {
+                // The same pixels and values as below, with the three edge
+                // functions in the lanes of one 32-bit vector (exact: they
+                // stay far inside 32 bits for a small triangle, and a float
+                // made from the same integer is the same float).
+                auto lanes = [](const std::array<std::int64_t, 3>& v) {
+                    return _mm_setr_epi32(static_cast<std::int32_t>(v[0]), static_cast<std::int32_t>(v[1]),
+                                          static_cast<std::int32_t>(v[2]), 0);
+                };
+                const __m128i sx = lanes(step_x), sy = lanes(step_y), bv = lanes(bias);
+                const __m128 wv = _mm_setr_ps(weight0, weight1, weight2, 0.0f);
+                auto outside = [](__m128i e) {  // some edge function < 0
+                    return (_mm_movemask_ps(_mm_castsi128_ps(e)) & 7) != 0;
+                };
+                const int span = tri.max_x - tri.min_x;
+                __m128i r = _mm_add_epi32(lanes(origin), bv);  // at the row's first pixel
+                std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
+                                  static_cast<std::size_t>(tri.min_x);
+                for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
+                    __m128i e = r;
+                    r = _mm_add_epi32(r, sy);
+                    int x = 0;
+                    while (x <= span && outside(e)) {
+                        e = _mm_add_epi32(e, sx);
+                        ++x;
+                    }
+                    if (x <= span) {
+                        const int first = x;
+                        do {
+                            const __m128 p = _mm_mul_ps(_mm_cvtepi32_ps(_mm_sub_epi32(e, bv)), wv);
+                            const __m128 p1 = _mm_shuffle_ps(p, p, 1);
+                            const __m128 p2 = _mm_movehl_ps(p, p);
+                            // (p0 + p1) + p2, as below
+                            const float inverse_w = _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, p1), p2));
+                            const std::size_t i = row + static_cast<std::size_t>(x);
+                            if (!(inverse_w <= s.depth[i])) {  // nearer (or NaN), as below
+                                s.depth[i] = inverse_w;
+                                s.visible[i] = shade;
+                                s.weight1[i] = _mm_cvtss_f32(p1);
+                                s.weight2[i] = _mm_cvtss_f32(p2);
+                            }
+                            e = _mm_add_epi32(e, sx);
+                            ++x;
+                        } while (x <= span && !outside(e));
+                        s.touched_begin[band_row] = std::min(s.touched_begin[band_row], tri.min_x + first);
+                        s.touched_end[band_row] = std::max(s.touched_end[band_row], tri.min_x + x);
+                    }
+                    row += width;
+                }
+                continue;
+            }
+#endif
+            if (tri.max_x - tri.min_x < narrow_triangle) {
+                // A narrow triangle (all of them, in meshes of 100k
+                // triangles and more): the same pixels and values as below,
+                // found by stepping the edge functions from pixel to pixel
+                // (the covered ones of a row are consecutive) instead of
+                // three 64-bit divisions a row.
+                const std::int64_t sx0 = step_x[0], sx1 = step_x[1], sx2 = step_x[2];
+                const std::int64_t b0 = bias[0], b1 = bias[1], b2 = bias[2];
+                const int span = tri.max_x - tri.min_x;
+                // The biased edge functions at the row's first pixel.
+                std::int64_t r0 = origin[0] + b0, r1 = origin[1] + b1, r2 = origin[2] + b2;
+                std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
+                                  static_cast<std::size_t>(tri.min_x);
+                for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
+                    std::int64_t e0 = r0, e1 = r1, e2 = r2;
+                    r0 += step_y[0], r1 += step_y[1], r2 += step_y[2];
+                    int x = 0;
+                    while (x <= span && (e0 | e1 | e2) < 0) {  // some edge < 0: outside
+                        e0 += sx0, e1 += sx1, e2 += sx2;
+                        ++x;
+                    }
+                    if (x <= span) {
+                        const int first = x;
+                        do {
+                            const float p0 = static_cast<float>(e0 - b0) * weight0;
+                            const float p1 = static_cast<float>(e1 - b1) * weight1;
+                            const float p2 = static_cast<float>(e2 - b2) * weight2;
+                            const float inverse_w = p0 + p1 + p2;
+                            const std::size_t i = row + static_cast<std::size_t>(x);
+                            if (!(inverse_w <= s.depth[i])) {  // nearer (or NaN), as below
+                                s.depth[i] = inverse_w;
+                                s.visible[i] = shade;
+                                s.weight1[i] = p1;
+                                s.weight2[i] = p2;
+                            }
+                            e0 += sx0, e1 += sx1, e2 += sx2;
+                            ++x;
+                        } while (x <= span && (e0 | e1 | e2) >= 0);
+                        s.touched_begin[band_row] = std::min(s.touched_begin[band_row], tri.min_x + first);
+                        s.touched_end[band_row] = std::max(s.touched_end[band_row], tri.min_x + x);
+                    }
+                    row += width;
+                }
+                continue;
+            }
             for (int y = y0; y <= y1; ++y) {
                 const std::int64_t rows = y - y0;
                 std::array<std::int64_t, 3> e;
@@ -606,18 +810,24 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                     std::max(s.touched_end[band_row], tri.min_x + static_cast<int>(last) + 1);
                 const std::size_t row = static_cast<std::size_t>(band_row) * width +
                                         static_cast<std::size_t>(tri.min_x);
-                for (std::int64_t x = first; x <= last; ++x) {
+                // The unbiased edge functions at pixel x, stepped along the row.
+                std::int64_t v0 = e[0] - bias[0] + first * step_x[0];
+                std::int64_t v1 = e[1] - bias[1] + first * step_x[1];
+                std::int64_t v2 = e[2] - bias[2] + first * step_x[2];
+                const std::int64_t sx0 = step_x[0], sx1 = step_x[1], sx2 = step_x[2];
+                const std::size_t row_last = row + static_cast<std::size_t>(last);
+                for (std::size_t i = row + static_cast<std::size_t>(first); i <= row_last;
+                     ++i, v0 += sx0, v1 += sx1, v2 += sx2) {
                     // Screen-space barycentrics scaled by 1/w: their sum is
                     // the interpolated 1/w (1 / view depth, linear on screen).
-                    const float p0 = static_cast<float>(e[0] - bias[0] + x * step_x[0]) * weight0;
-                    const float p1 = static_cast<float>(e[1] - bias[1] + x * step_x[1]) * weight1;
-                    const float p2 = static_cast<float>(e[2] - bias[2] + x * step_x[2]) * weight2;
+                    const float p0 = static_cast<float>(v0) * weight0;
+                    const float p1 = static_cast<float>(v1) * weight1;
+                    const float p2 = static_cast<float>(v2) * weight2;
                     const float inverse_w = p0 + p1 + p2;
                     // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
-                    const std::size_t i = row + static_cast<std::size_t>(x);
                     if (inverse_w <= s.depth[i]) continue;
                     s.depth[i] = inverse_w;
-                    s.visible[i] = &tri;
+                    s.visible[i] = shade;
                     s.weight1[i] = p1;  // divided by 1/w once, when shading
                     s.weight2[i] = p2;
                 }
@@ -660,7 +870,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     const int end = std::max(begin, s.touched_end[static_cast<std::size_t>(band_row)]);
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);
-        const RasterTriangle* tri = s.visible[i];
+        const ShadeTriangle* tri = s.visible[i];
         if (!tri) {
             flush();
             continue;
@@ -702,6 +912,54 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (run_length == 0) run_first = x;
         run_object = &object;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
+#if defined(__SSE2__)
+        if (count < short_span) {
+            // Small triangles: the formulas of interpolate_surface pixel by
+            // pixel (a SIMD call across pixels would mostly pad), with x, y
+            // and z in the lanes of one SSE vector: the same products and
+            // sums, in the same order, as the scalar code and the kernel.
+            auto load3 = [](const float* v) {  // (v[0], v[1], v[2], 0), reading 3 floats
+                const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(v));
+                return _mm_movelh_ps(xy, _mm_load_ss(v + 2));
+            };
+            __m128 corner_p[3], corner_n[3];
+            for (int k = 0; k < 3; ++k) {
+                if (tri->clipped < 0) {
+                    corner_p[k] = load3(&object.positions[tri->vertex[k]].x);
+                    corner_n[k] = load3(&object.normals[tri->vertex[k]].x);
+                } else {
+                    const auto& v = (*tri->varyings)[k];
+                    corner_p[k] = load3(&v[0]);
+                    corner_n[k] = load3(&v[3]);
+                }
+            }
+            auto store = [](__m128 v, float* x, float* y, float* z) {
+                _mm_store_ss(x, v);
+                _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
+                _mm_store_ss(z, _mm_movehl_ps(v, v));
+            };
+            const bool faceted = object.shading == Shading::Faceted;
+            for (std::size_t k = 0; k < count; ++k) {
+                const float w = 1.0f / s.depth[i + k];
+                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
+                const float q0 = 1.0f - q1 - q2;
+                const __m128 a = _mm_set1_ps(q0), b = _mm_set1_ps(q1), c = _mm_set1_ps(q2);
+                const std::size_t at = run_length + k;
+                store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_p[0]), _mm_mul_ps(b, corner_p[1])),
+                                 _mm_mul_ps(c, corner_p[2])),
+                      &s.px[at], &s.py[at], &s.pz[at]);
+                if (faceted) {
+                    // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
+                    const glm::vec3& n = object.face_normals[tri->source];
+                    s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
+                } else {
+                    store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_n[0]), _mm_mul_ps(b, corner_n[1])),
+                                     _mm_mul_ps(c, corner_n[2])),
+                          &s.nx[at], &s.ny[at], &s.nz[at]);
+                }
+            }
+        } else
+#endif
         if (count < short_span) {
             // Small triangles: the scalar formulas, pixel by pixel (a SIMD
             // call would mostly pad); the same roundings as the kernel.
@@ -821,8 +1079,8 @@ void Renderer::render_into(Image& image) {
         impl.background_row[i] = background[i % 3];
     for (BandScratch& scratch : impl.scratch) scratch.shaded_pixels = 0;
     impl.vertex_stage(width, height);
-    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int) {
-        impl.setup(impl.chunks[c], width, height);
+    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int worker) {
+        impl.setup(impl.chunks[c], impl.scratch[static_cast<std::size_t>(worker)], width, height);
     });
     impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
         impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
