@@ -66,14 +66,17 @@ core::MaterialData material_data(const Material& material) {
 
 // Every light is a uniform struct of about 24 components (vec3s padded to
 // four); a shader that will not link with many lights most likely ran out.
-std::string lights_hint(int lights) {
-    if (lights < 16) return "";
+int lights_room() {
     GLint vertex = 0, fragment = 0;
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &vertex);
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &fragment);
-    const int room = std::min(vertex, fragment) / 24;
+    return std::min(vertex, fragment) / 24;
+}
+
+std::string lights_hint(int lights) {
+    if (lights < 16) return "";
     return " (the scene has " + std::to_string(lights) + " lights; this OpenGL has room for about " +
-           std::to_string(room) + " in a shader)";
+           std::to_string(lights_room()) + " in a shader)";
 }
 
 std::string gl_string(GLenum name) {
@@ -200,6 +203,12 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
         for (const equations::PreparedLight& light : detail::prepared_lights(scene))
             gl.lights.push_back(light_data(light));
         const int capacity = std::max<int>(1, static_cast<int>(gl.lights.size()));
+        // Far beyond the room: refused at once, rather than after the
+        // driver has compiled a shader of thousands of lights to find out
+        // (llvmpipe under AddressSanitizer took minutes). Near the room, the
+        // link decides.
+        if (capacity >= 16 && capacity > 2 * lights_room())
+            throw GlError("the shaders cannot hold the scene's lights" + lights_hint(capacity));
         std::vector<Light> lights;
         for (const SceneLight& light : scene.lights) lights.push_back(light.light);
 
