@@ -34,7 +34,9 @@
 # cube, the full-screen fill and the 261k sphere), with their picture
 # checks; 5 whole-process runs per round. Installs what it needs through
 # `scripts/install-deps.sh --bench`. Builds what it runs in build-bench/
-# (LITKIT_BENCH_BUILD overrides), with at most 2 parallel jobs. Raw numbers
+# (LITKIT_BENCH_BUILD overrides: an existing tree, such as the tests' Release
+# tree `build` that CI uses, gets the benchmarks added and keeps its tests),
+# with at most 2 parallel jobs. Raw numbers
 # go to build-bench/compare/. LITKIT_BENCH_HYPERFINE=0 uses the plain loop
 # even where hyperfine is installed; LITKIT_BENCH_THREADS sets the thread
 # count of both sides (default 2).
@@ -67,12 +69,19 @@ done
 # need (apt; a no-op when everything is there).
 "$root/scripts/install-deps.sh" --bench
 [ $targets = yes ] && [ "$whole_runs" -gt 5 ] && whole_runs=5
-if ! grep -qs '^LITKIT_BUILD_BENCH:BOOL=ON' "$build/CMakeCache.txt"; then
+if [ ! -f "$build/CMakeCache.txt" ]; then
   generator=()
-  [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null && generator=(-G Ninja)
+  command -v ninja >/dev/null && generator=(-G Ninja)
   cmake -S "$root" -B "$build" "${generator[@]}" -DLITKIT_BUILD_BENCH=ON \
         -DCMAKE_BUILD_TYPE=Release -DLITKIT_BUILD_TESTS=OFF >/dev/null
+elif ! grep -qs '^LITKIT_BUILD_BENCH:BOOL=ON' "$build/CMakeCache.txt"; then
+  # A tree made for something else (LITKIT_BENCH_BUILD=build, as CI does): add the
+  # benchmarks and keep everything else it has (its tests, its build type).
+  cmake -S "$root" -B "$build" -DLITKIT_BUILD_BENCH=ON >/dev/null
 fi
+build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt")
+[ "$build_type" = Release ] ||
+  echo "warning: $build is a ${build_type:-no-type} build, not Release: its times are not litkit's" >&2
 if ! cmake --build "$build" -j2 --target litkit_cli litkit_png_diff litkit_gl_peer >"$build/compare-build.log" 2>&1; then
   tail -n 20 "$build/compare-build.log" >&2
   if [ -x "$build/litkit" ] && [ -x "$build/litkit_png_diff" ] && [ -x "$build/litkit_gl_peer" ] &&
