@@ -56,6 +56,7 @@
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
+#include "heap.hpp"
 #include "peer.hpp"
 #include "picture_agreement.hpp"
 
@@ -417,6 +418,14 @@ int run(const Arguments& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The heap litkit's command sets up (apps/litkit/heap.cpp: 2 MiB pages,
+    // no separate mappings for large blocks). Without it this program's
+    // frames depend on an accident of glibc: llvmpipe allocates large
+    // blocks every frame, which glibc maps and unmaps afresh (every page a
+    // fault, about 14 µs each on this VM) unless a large block freed earlier
+    // had raised its mmap threshold. On the 261k sphere: 83-102 ms a frame
+    // without, 31-36 ms with (docs/performance.md). The peer at its best.
+    litkit_cli::use_large_pages_for_the_heap();
     try {
         return run(parse(argc, argv));
     } catch (const litkit::Error& error) {
