@@ -12,8 +12,14 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <new>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include "crossing.hpp"
+#include "litkit/gl_renderer.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -68,10 +74,117 @@ TEST(ModulesLinking, TheExecutableLoadsNoWindowOrOpenGlLibraries) {
     // What the dynamic loader loads for the executable (how ldd asks it).
     const auto loaded = run_command("LD_TRACE_LOADED_OBJECTS=1 '" LITKIT_CLI "'");
     ASSERT_EQ(loaded.status, 0) << loaded.output;
-    ASSERT_NE(loaded.output.find("libstdc++"), std::string::npos) << loaded.output;
+    ASSERT_NE(loaded.output.find("libc.so"), std::string::npos) << loaded.output;
     for (const char* library :
          {"libSDL2", "libimgui", "libX11", "libwayland", "libpulse", "libasound", "libepoxy", "libEGL", "libGL"})
         EXPECT_EQ(loaded.output.find(library), std::string::npos) << library << " in\n" << loaded.output;
+}
+
+#if LITKIT_CLI_LINKED_STATICALLY
+TEST(ModulesLinking, TheStaticallyLinkedExecutableLoadsOnlyTheCLibrary) {
+    // docs/design.md "Start-up": libstdc++, libgcc, libpng, zlib, FreeType,
+    // brotli and giflib are linked in; toml++ and tinyobjloader are compiled
+    // into the library. What is loaded is the C library, libm, the dynamic
+    // loader and the kernel's vDSO, one per line.
+    const auto loaded = run_command("LD_TRACE_LOADED_OBJECTS=1 '" LITKIT_CLI "'");
+    ASSERT_EQ(loaded.status, 0) << loaded.output;
+    std::istringstream lines(loaded.output);
+    int count = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find_first_not_of(" \t") == std::string::npos) continue;
+        ++count;
+        const bool expected = line.find("linux-vdso.so") != std::string::npos ||
+                              line.find("libc.so.6") != std::string::npos ||
+                              line.find("libm.so.6") != std::string::npos ||
+                              line.find("ld-linux") != std::string::npos;
+        EXPECT_TRUE(expected) << "unexpected: " << line;
+    }
+    EXPECT_EQ(count, 4) << loaded.output;
+}
+#endif
+
+// Nothing is thrown across a module's boundary (apps/litkit/crossing.hpp):
+// what one side catches, the other throws again as the same error, with the
+// members its handlers read.
+namespace {
+
+litkit_cli::CaughtError caught_from(const std::function<void()>& thrower) {
+    litkit_cli::CaughtError error;
+    EXPECT_FALSE(litkit_cli::call_catching(thrower, error));
+    return error;
+}
+
+template <class E>
+E thrown_again(const litkit_cli::CaughtError& error) {
+    try {
+        litkit_cli::throw_again(error);
+    } catch (const E& again) {
+        return again;
+    } catch (const std::exception& other) {
+        ADD_FAILURE() << "threw another type: " << other.what();
+    }
+    throw std::logic_error("not thrown as expected");
+}
+
+}  // namespace
+
+TEST(ModulesCrossing, NothingThrownIsNoError) {
+    litkit_cli::CaughtError error;
+    EXPECT_TRUE(litkit_cli::call_catching([] {}, error));
+    EXPECT_EQ(error.kind, litkit_cli::CaughtError::Kind::None);
+}
+
+TEST(ModulesCrossing, SceneErrorKeepsItsDiagnosticsAndWarnings) {
+    const litkit::Diagnostic problem{{"a.toml", 3, 7}, litkit::Severity::Error, "radius must be > 0"};
+    const litkit::Diagnostic other{{"b.toml", 1, 1}, litkit::Severity::Error, "unknown key 'x'"};
+    const litkit::Diagnostic warning{{"a.toml", 9, 2}, litkit::Severity::Warning, "no lights"};
+    const auto error = caught_from([&] { throw litkit::SceneError({problem, other}, {warning}); });
+    EXPECT_EQ(error.kind, litkit_cli::CaughtError::Kind::Scene);
+    const auto again = thrown_again<litkit::SceneError>(error);
+    ASSERT_EQ(again.diagnostics().size(), 2u);
+    EXPECT_EQ(again.diagnostics()[1].to_string(), "b.toml:1:1: error: unknown key 'x'");
+    ASSERT_EQ(again.warnings().size(), 1u);
+    EXPECT_EQ(again.warnings()[0].to_string(), "a.toml:9:2: warning: no lights");
+    EXPECT_EQ(again.location().to_string(), "a.toml:3:7");
+    EXPECT_STREQ(again.what(), litkit::SceneError({problem, other}).what());
+}
+
+TEST(ModulesCrossing, IoErrorKeepsPathReasonPlaceAndDirection) {
+    const auto error = caught_from([] {
+        throw litkit::IoError("out.png", "No space left on device", {"s.toml", 4, 0}, litkit::IoError::Access::Write);
+    });
+    EXPECT_EQ(error.kind, litkit_cli::CaughtError::Kind::Io);
+    const auto again = thrown_again<litkit::IoError>(error);
+    EXPECT_EQ(again.path(), "out.png");
+    EXPECT_EQ(again.reason(), "No space left on device");
+    EXPECT_EQ(again.access(), litkit::IoError::Access::Write);
+    EXPECT_STREQ(again.what(), "s.toml:4: error: cannot write 'out.png': No space left on device");
+}
+
+TEST(ModulesCrossing, EveryOtherKindIsThrownAgainAsItsOwnType) {
+    const auto gl = caught_from([] { throw litkit::GlError("OpenGL is not available: no display"); });
+    EXPECT_STREQ(thrown_again<litkit::GlError>(gl).what(), "OpenGL is not available: no display");
+
+    const auto argument = caught_from([] { throw litkit::ArgumentError("radius 0", {"f", 2, 3}); });
+    const auto argument_again = thrown_again<litkit::ArgumentError>(argument);
+    EXPECT_STREQ(argument_again.what(), "radius 0");
+    EXPECT_EQ(argument_again.location().line, 2u);
+
+    const auto plain = caught_from([] { throw litkit::Error("plain"); });
+    EXPECT_EQ(plain.kind, litkit_cli::CaughtError::Kind::Litkit);
+    EXPECT_STREQ(thrown_again<litkit::Error>(plain).what(), "plain");
+
+    const auto memory = caught_from([] { throw std::bad_alloc(); });
+    EXPECT_EQ(memory.kind, litkit_cli::CaughtError::Kind::OutOfMemory);
+    thrown_again<std::bad_alloc>(memory);
+
+    const auto other = caught_from([] { throw std::out_of_range("index 7"); });
+    EXPECT_EQ(other.kind, litkit_cli::CaughtError::Kind::Other);
+    EXPECT_STREQ(thrown_again<std::runtime_error>(other).what(), "index 7");
+
+    const auto unknown = caught_from([] { throw 42; });
+    EXPECT_EQ(unknown.kind, litkit_cli::CaughtError::Kind::Other);
+    EXPECT_STREQ(thrown_again<std::runtime_error>(unknown).what(), "unknown error");
 }
 
 TEST_F(Modules, MissingViewerIsAClearErrorAndEveryOtherCommandWorks) {

@@ -11,16 +11,21 @@ class GlRendererBackend final : public GlBackend {
 public:
     GlRendererBackend(const litkit::Scene& scene, const litkit::RenderOptions& options)
         : renderer_(scene, options) {}
-    void render_into(litkit::Image& image) override { renderer_.render_into(image); }
-    std::size_t triangle_count() const override { return renderer_.triangle_count(); }
-    std::string description() const override { return renderer_.description(); }
+    bool render_into(litkit::Image& image, CaughtError& error) noexcept override {
+        return call_catching([&] { renderer_.render_into(image); }, error);
+    }
+    std::size_t triangle_count() const noexcept override { return renderer_.triangle_count(); }
+    std::string description() const noexcept override { return renderer_.description(); }
 
 private:
     litkit::GlRenderer renderer_;
 };
 
-std::unique_ptr<GlBackend> create(const litkit::Scene& scene, const litkit::RenderOptions& options) {
-    return std::make_unique<GlRendererBackend>(scene, options);
+std::unique_ptr<GlBackend> create(const litkit::Scene& scene, const litkit::RenderOptions& options,
+                                  CaughtError& error) noexcept {
+    std::unique_ptr<GlBackend> backend;
+    call_catching([&] { backend = std::make_unique<GlRendererBackend>(scene, options); }, error);
+    return backend;
 }
 
 }  // namespace

@@ -11,26 +11,31 @@
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
+#include "crossing.hpp"
 #include "modules.hpp"
 
 namespace litkit_cli {
 
 // What the CLI asks of the OpenGL backend (litkit::GlRenderer's functions
-// of the same names).
+// of the same names). Nothing is thrown across the module's boundary
+// (crossing.hpp): what the renderer throws comes back in `error`.
 class GlBackend {
 public:
     virtual ~GlBackend() = default;
-    virtual void render_into(litkit::Image& image) = 0;
-    virtual std::size_t triangle_count() const = 0;
-    virtual std::string description() const = 0;
+    // False when it threw (`error` says what).
+    virtual bool render_into(litkit::Image& image, CaughtError& error) noexcept = 0;
+    virtual std::size_t triangle_count() const noexcept = 0;
+    virtual std::string description() const noexcept = 0;
 };
 
 // What the module's entry function returns.
 struct GlModule {
     ModuleStamp stamp;  // module_stamp<GlModule, litkit::RenderOptions>()
-    // A renderer on a headless context of its own; throws litkit::GlError
-    // (or IoError for an unreadable mesh file) as GlRenderer's constructor.
-    std::unique_ptr<GlBackend> (*create)(const litkit::Scene& scene, const litkit::RenderOptions& options);
+    // A renderer on a headless context of its own; null when GlRenderer's
+    // constructor threw (litkit::GlError, or IoError for an unreadable mesh
+    // file), which `error` then holds.
+    std::unique_ptr<GlBackend> (*create)(const litkit::Scene& scene, const litkit::RenderOptions& options,
+                                         CaughtError& error) noexcept;
 };
 
 }  // namespace litkit_cli

@@ -210,18 +210,22 @@ class Backend {
 public:
     Backend(const litkit::Scene& scene, const SceneArguments& arguments) {
         const litkit::RenderOptions options{.threads = arguments.threads.value_or(0)};
-        if (arguments.backend == "gl")
+        if (arguments.backend == "gl") {
+            litkit_cli::CaughtError error;
             gl_ = litkit_cli::open_module<litkit_cli::GlModule, litkit::RenderOptions>(
                       "litkit-gl.so", "litkit_gl_module", "--backend gl")
-                      .create(scene, options);
-        else
+                      .create(scene, options, error);
+            if (!gl_) litkit_cli::throw_again(error);
+        } else {
             cpu_ = std::make_unique<litkit::Renderer>(scene, options);
+        }
     }
     void render_into(litkit::Image& image) {
-        if (gl_)
-            gl_->render_into(image);
-        else
+        litkit_cli::CaughtError error;
+        if (!gl_)
             cpu_->render_into(image);
+        else if (!gl_->render_into(image, error))
+            litkit_cli::throw_again(error);
     }
     std::size_t triangle_count() const {
         return gl_ ? gl_->triangle_count() : cpu_->triangle_count();
@@ -531,12 +535,18 @@ int run_view(const ViewArguments& arguments) {
     options.benchmark_frames = arguments.orbit_frames;
     // A reload reads the files as at start; [lighting] left out now takes
     // the defaults (there is no terminal to ask in a window).
-    options.load = [arguments] {
-        litkit::Scene loaded = load(arguments.scene);
-        settle_missing_lighting(loaded, true);
-        return loaded;
+    options.load = [arguments](litkit::Scene& loaded, litkit_cli::CaughtError& error) noexcept {
+        return litkit_cli::call_catching(
+            [&] {
+                loaded = load(arguments.scene);
+                settle_missing_lighting(loaded, true);
+            },
+            error);
     };
-    return viewer.run(options, std::move(scene));
+    litkit_cli::CaughtError error;
+    const int status = viewer.run(options, std::move(scene), error);
+    if (error.kind != litkit_cli::CaughtError::Kind::None) litkit_cli::throw_again(error);
+    return status;
 }
 
 int run_explain(const ExplainArguments& arguments) {

@@ -101,10 +101,13 @@ public:
     const std::string& path() const noexcept { return path_; }
     /// Why it failed, without the path.
     const std::string& reason() const noexcept { return reason_; }
+    /// Reading or writing.
+    Access access() const noexcept { return access_; }
 
 private:
     std::string path_;
     std::string reason_;
+    Access access_;
 };
 
 }  // namespace litkit

@@ -75,6 +75,7 @@ IoError::IoError(std::string path, std::string reason, FileLoc location, Access 
                 (access == Access::Read ? "read" : "write") + " '" + printable(path) + "': " + printable(reason),
             location),
       path_(std::move(path)),
-      reason_(std::move(reason)) {}
+      reason_(std::move(reason)),
+      access_(access) {}
 
 }  // namespace litkit

@@ -408,7 +408,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             if (reload_at != never && clock_type::now() >= reload_at) {
                 reload_at = never;
                 try {
-                    litkit::Scene loaded = options.load();
+                    litkit::Scene loaded;
+                    if (CaughtError failure; !options.load(loaded, failure)) throw_again(failure);
                     if (!(loaded.observer.position == file_scene.observer.position &&
                           loaded.observer.look_at == file_scene.observer.look_at &&
                           loaded.observer.up == file_scene.observer.up &&
@@ -606,6 +607,13 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
 
 extern "C" __attribute__((visibility("default"))) const litkit_cli::ViewerModule* litkit_viewer_module() {
     static constexpr litkit_cli::ViewerModule module{
-        litkit_cli::module_stamp<litkit_cli::ViewerModule, litkit_cli::ViewerOptions>(), litkit_cli::run_viewer};
+        litkit_cli::module_stamp<litkit_cli::ViewerModule, litkit_cli::ViewerOptions>(),
+        [](const litkit_cli::ViewerOptions& options, litkit::Scene scene,
+           litkit_cli::CaughtError& error) noexcept {
+            int status = 1;
+            litkit_cli::call_catching([&] { status = litkit_cli::run_viewer(options, std::move(scene)); },
+                                      error);
+            return status;
+        }};
     return &module;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "litkit/scene.hpp"
+#include "crossing.hpp"
 #include "modules.hpp"
 
 namespace litkit_cli {
@@ -20,10 +21,9 @@ struct ViewerOptions {
     // A measurement (docs/performance.md): orbit this many frames, 2° each,
     // as fast as they render and show, print the frame rate and close.
     int benchmark_frames = 0;
-    // The command line's replacements, applied again after every reload.
-    std::function<void(litkit::Scene&)> apply_options;
-    // Reading the files as `render` does (validation, R11); throws like it.
-    std::function<litkit::Scene()> load;
+    // Reading the files as `render` does (validation, R11): into `scene`, or
+    // false with what it threw in `error` (crossing.hpp).
+    std::function<bool(litkit::Scene& scene, CaughtError& error)> load;
 };
 
 // Opens the window and runs until it is closed (Esc, Q, the window's close
@@ -35,7 +35,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene);
 // view` opens (modules.hpp). This is what its entry function returns.
 struct ViewerModule {
     ModuleStamp stamp;  // module_stamp<ViewerModule, ViewerOptions>()
-    int (*run)(const ViewerOptions& options, litkit::Scene scene);
+    // run_viewer; what it throws comes back in `error` (crossing.hpp).
+    int (*run)(const ViewerOptions& options, litkit::Scene scene, CaughtError& error) noexcept;
 };
 
 }  // namespace litkit_cli
