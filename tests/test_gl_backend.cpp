@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "litkit/gl_renderer.hpp"
@@ -117,6 +118,23 @@ TEST(GlBackend, ReportsTheRenderer) {
     const int major = std::atoi(description.c_str() + at + 9);
     EXPECT_GE(major, 3) << description;
     EXPECT_EQ(gl.triangle_count(), 12u);
+}
+
+TEST(GlBackend, ReadBackAtEverySizeKeepsEveryRowAndPixelInPlace) {
+    // The read-back (opengl_core.inc's read_rgb) goes in bands of rows and
+    // converts eight pixels at a time where the CPU has AVX2 (gl_renderer.cpp),
+    // the rest one by one: widths around and between those multiples, and
+    // heights of one band (1920 wide: 34 rows), several, and a part of one.
+    for (const auto& [width, height] : std::vector<std::pair<int, int>>{
+             {1, 5}, {7, 3}, {8, 4}, {9, 9}, {15, 2}, {16, 7}, {17, 11}, {37, 23}, {161, 40}, {1920, 34}, {1920, 101}}) {
+        litkit::Scene scene = litkit::default_scene();
+        scene.output.width = width;
+        scene.output.height = height;
+        const Comparison comparison = compare_backends(scene);
+        SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
+        EXPECT_EQ(comparison.agreement.background_differing, 0u);
+        EXPECT_GE(comparison.agreement.fraction_of_all(), 0.99);
+    }
 }
 
 TEST(GlBackend, SeveralRenderersInOneProcessEachDrawTheirOwnScene) {
