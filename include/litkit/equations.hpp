@@ -19,6 +19,11 @@
 #include <type_traits>
 #include <utility>
 
+namespace xsimd {
+template <class T, class A>
+class batch;
+}
+
 /// The lighting equations as templates on the scalar type T (float, a SIMD
 /// batch, a GLSL expression): one text for every path (see equations.hpp).
 namespace litkit::equations {
@@ -36,6 +41,15 @@ using std::floor;
 using std::pow;
 using std::sqrt;
 //@}
+
+/// pow of SIMD batches of floats (the CPU kernels' T): exactly xsimd::pow's
+/// result, but where no lane's base is negative (as max(base, 0) makes it
+/// for every use but toon's) without the work xsimd::pow does for negative
+/// bases. Declared here so that the templates below find it before xsimd's
+/// own pow; defined in src/cpu/shade_kernel_impl.hpp, where the kernels
+/// are compiled.
+template <class Arch>
+xsimd::batch<float, Arch> pow(const xsimd::batch<float, Arch>& base, const xsimd::batch<float, Arch>& exponent);
 
 /// A 3-vector of T: a point, direction or RGB colour, one per lane of a batch.
 template <class T>

@@ -8,8 +8,23 @@
 
 #include <xsimd/xsimd.hpp>
 
+#include <bit>
+#include <cstdint>
+#include <cstring>
 
 #include "cpu/shade_kernel.hpp"
+
+template <class Arch>
+xsimd::batch<float, Arch> litkit::equations::pow(const xsimd::batch<float, Arch>& base,
+                                                 const xsimd::batch<float, Arch>& exponent) {
+    using Batch = xsimd::batch<float, Arch>;
+    // xsimd::pow (xsimd/arch/generic/xsimd_generic_math.hpp) computes
+    // exp(exponent · log(|base|)) with 0 where the base is 0, then fixes the
+    // sign and NaN of negative bases. Where no lane is negative that is all
+    // it does; a zero lane's exp(exponent · log 0) is replaced by 0 as there.
+    if (xsimd::any(base < Batch(0.0f))) return xsimd::pow(base, exponent);
+    return xsimd::select(base == Batch(0.0f), Batch(0.0f), xsimd::exp(exponent * xsimd::log(base)));
+}
 
 namespace litkit::kernels::detail {
 
@@ -128,20 +143,26 @@ struct Impl {
     static Batch to_levels(Batch intensity, float gamma) {
         intensity = xsimd::select(intensity > Batch(0.0f), intensity, Batch(0.0f));  // NaN → 0
         intensity = xsimd::min(intensity, Batch(1.0f));
-        if (gamma != 1.0f) intensity = xsimd::pow(intensity, Batch(1.0f / gamma));
+        if (gamma != 1.0f) intensity = equations::pow(intensity, Batch(1.0f / gamma));
         return xsimd::floor(intensity * Batch(255.0f) + Batch(0.5f));
     }
 
     static void encode(const float* r, const float* g, const float* b, std::size_t count,
                        float gamma, std::uint8_t* rgb) {
-        alignas(64) float levels[3][width];
+        using Words = xsimd::batch<std::int32_t, Arch>;
         alignas(64) float padded[3][width];
+        // Each pixel's three levels (whole numbers 0-255) as one word, r in
+        // the lowest byte; written four bytes at a time, the fourth
+        // overwritten by the next pixel's r, the last pixel three.
+        alignas(64) std::int32_t words[width];
+        static_assert(std::endian::native == std::endian::little, "a word's lowest byte first");
         for (std::size_t i = 0; i < count; i += width) {
             const std::size_t lanes = count - i < width ? count - i : width;
+            Batch levels[3];
             if (lanes == width) {
-                to_levels(Batch::load_unaligned(r + i), gamma).store_aligned(levels[0]);
-                to_levels(Batch::load_unaligned(g + i), gamma).store_aligned(levels[1]);
-                to_levels(Batch::load_unaligned(b + i), gamma).store_aligned(levels[2]);
+                levels[0] = to_levels(Batch::load_unaligned(r + i), gamma);
+                levels[1] = to_levels(Batch::load_unaligned(g + i), gamma);
+                levels[2] = to_levels(Batch::load_unaligned(b + i), gamma);
             } else {
                 for (std::size_t lane = 0; lane < width; ++lane) {
                     const std::size_t from = i + (lane < lanes ? lane : lanes - 1);
@@ -149,15 +170,15 @@ struct Impl {
                     padded[1][lane] = g[from];
                     padded[2][lane] = b[from];
                 }
-                for (int c = 0; c < 3; ++c)
-                    to_levels(Batch::load_aligned(padded[c]), gamma).store_aligned(levels[c]);
+                for (int c = 0; c < 3; ++c) levels[c] = to_levels(Batch::load_aligned(padded[c]), gamma);
             }
-            for (std::size_t lane = 0; lane < lanes; ++lane) {
-                std::uint8_t* out = rgb + 3 * (i + lane);
-                out[0] = static_cast<std::uint8_t>(static_cast<int>(levels[0][lane]));
-                out[1] = static_cast<std::uint8_t>(static_cast<int>(levels[1][lane]));
-                out[2] = static_cast<std::uint8_t>(static_cast<int>(levels[2][lane]));
-            }
+            const Words packed = xsimd::batch_cast<std::int32_t>(levels[0]) |
+                                 (xsimd::batch_cast<std::int32_t>(levels[1]) << 8) |
+                                 (xsimd::batch_cast<std::int32_t>(levels[2]) << 16);
+            packed.store_aligned(words);
+            std::uint8_t* out = rgb + 3 * i;
+            for (std::size_t lane = 0; lane + 1 < lanes; ++lane) std::memcpy(out + 3 * lane, &words[lane], 4);
+            std::memcpy(out + 3 * (lanes - 1), &words[lanes - 1], 3);
         }
     }
 };
