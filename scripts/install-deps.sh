@@ -17,7 +17,9 @@ packages=(
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxsimd-dev
   # litkit compare's labels (FreeType, DejaVu Sans) and litkit turntable's GIFs.
-  libfreetype-dev fonts-dejavu-core libgif-dev
+  # The litkit executable links these, libpng and zlib statically: their -dev
+  # packages ship the archives, and FreeType's need the brotli decoder's.
+  libfreetype-dev fonts-dejavu-core libgif-dev libbrotli-dev
   # The OpenGL backend (litkit::gl) and the exported programs: EGL headless on
   # Mesa's llvmpipe where there is no GPU, GL loaded through libepoxy.
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev

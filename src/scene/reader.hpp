@@ -28,7 +28,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
-#include <toml++/toml.h>
+#include "scene/toml.hpp"
 
 #include <filesystem>
 #include <map>
