@@ -7,6 +7,7 @@ namespace litkit {
 ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
     if (threads <= 0) threads = 1;
+    stretches_ = std::make_unique<Stretch[]>(static_cast<std::size_t>(threads));
     workers_.reserve(static_cast<std::size_t>(threads - 1));
     for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { worker_loop(i); });
 }
@@ -20,16 +21,31 @@ ThreadPool::~ThreadPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
-void ThreadPool::run_task(const Task& task, std::size_t count, int worker) {
-    for (;;) {
-        std::size_t index = next_index_.fetch_add(1, std::memory_order_relaxed);
-        if (index >= count) return;
-        try {
-            task.call(task.context, index, worker);
-        } catch (...) {
-            std::lock_guard lock(mutex_);
-            if (!failure_) failure_ = std::current_exception();
-            next_index_.store(count, std::memory_order_relaxed);  // stop handing out work
+// Thread w takes the indices of stretch w first, in order, then helps with
+// the others' (each index is handed out once, by its stretch's counter).
+// Which thread does which work thus stays the same from frame to frame
+// wherever the threads keep pace, and so does where the memory a stage
+// writes is cached: the vertex stage's output, for one, read by the next
+// stage and written again in the next frame. Handed out to whichever thread
+// came first, those lines moved between the cores' caches every frame, and
+// the 261k sphere's vertex stage took longer on 2 threads than on 1
+// (docs/performance.md, "Threads and caches").
+void ThreadPool::run_task(const Task& task, std::size_t /*count*/, int worker) {
+    const std::size_t stretches = static_cast<std::size_t>(size());
+    for (std::size_t k = 0; k < stretches; ++k) {
+        Stretch& stretch = stretches_[(static_cast<std::size_t>(worker) + k) % stretches];
+        for (;;) {
+            const std::size_t index = stretch.next.fetch_add(1, std::memory_order_relaxed);
+            if (index >= stretch.end) break;
+            try {
+                task.call(task.context, index, worker);
+            } catch (...) {
+                std::lock_guard lock(mutex_);
+                if (!failure_) failure_ = std::current_exception();
+                // Stop handing out work.
+                for (std::size_t s = 0; s < stretches; ++s)
+                    stretches_[s].next.store(stretches_[s].end, std::memory_order_relaxed);
+            }
         }
     }
 }
@@ -65,7 +81,11 @@ void ThreadPool::run(std::size_t count, Trampoline call, const void* context) {
         std::lock_guard lock(mutex_);
         task_ = Task{call, context};
         job_count_ = count;
-        next_index_.store(0, std::memory_order_relaxed);
+        const std::size_t stretches = static_cast<std::size_t>(size());
+        for (std::size_t s = 0; s < stretches; ++s) {
+            stretches_[s].next.store(count * s / stretches, std::memory_order_relaxed);
+            stretches_[s].end = count * (s + 1) / stretches;
+        }
         failure_ = nullptr;
         ++generation_;
     }

@@ -1,6 +1,7 @@
 // A small fixed thread pool owned by its user (no global state). Runs
 // `parallel_for` jobs: indices 0..count-1 handed out one at a time, so uneven
-// work (bands crowded with triangles) balances itself.
+// work (bands crowded with triangles) balances itself; each thread starts
+// on its own stretch of them, the same from call to call (thread_pool.cpp).
 #pragma once
 
 #include <atomic>
@@ -54,7 +55,14 @@ private:
     std::condition_variable done_;
     Task task_;  // call == nullptr: no job under way
     std::size_t job_count_ = 0;
-    std::atomic<std::size_t> next_index_{0};
+    // The indices of the job under way in size() stretches, one per thread
+    // to start with; a line each, so that threads taking from their own do
+    // not contend.
+    struct alignas(64) Stretch {
+        std::atomic<std::size_t> next{0};
+        std::size_t end = 0;
+    };
+    std::unique_ptr<Stretch[]> stretches_;
     std::size_t generation_ = 0;
     int busy_workers_ = 0;
     bool stopping_ = false;
