@@ -810,27 +810,24 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                     std::max(s.touched_end[band_row], tri.min_x + static_cast<int>(last) + 1);
                 const std::size_t row = static_cast<std::size_t>(band_row) * width +
                                         static_cast<std::size_t>(tri.min_x);
-                // The unbiased edge functions at pixel x, stepped along the row.
-                std::int64_t v0 = e[0] - bias[0] + first * step_x[0];
-                std::int64_t v1 = e[1] - bias[1] + first * step_x[1];
-                std::int64_t v2 = e[2] - bias[2] + first * step_x[2];
-                const std::int64_t sx0 = step_x[0], sx1 = step_x[1], sx2 = step_x[2];
-                const std::size_t row_last = row + static_cast<std::size_t>(last);
-                for (std::size_t i = row + static_cast<std::size_t>(first); i <= row_last;
-                     ++i, v0 += sx0, v1 += sx1, v2 += sx2) {
-                    // Screen-space barycentrics scaled by 1/w: their sum is
-                    // the interpolated 1/w (1 / view depth, linear on screen).
-                    const float p0 = static_cast<float>(v0) * weight0;
-                    const float p1 = static_cast<float>(v1) * weight1;
-                    const float p2 = static_cast<float>(v2) * weight2;
-                    const float inverse_w = p0 + p1 + p2;
-                    // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
-                    if (inverse_w <= s.depth[i]) continue;
-                    s.depth[i] = inverse_w;
-                    s.visible[i] = shade;
-                    s.weight1[i] = p1;  // divided by 1/w once, when shading
-                    s.weight2[i] = p2;
+                // The unbiased edge functions at the span's first pixel,
+                // stepped along the row by the kernel set (several pixels
+                // at a time) where they stay within a double's exact
+                // integers, as the guard band makes them in practice.
+                const std::int64_t v[3] = {e[0] - bias[0] + first * step_x[0],
+                                           e[1] - bias[1] + first * step_x[1],
+                                           e[2] - bias[2] + first * step_x[2]};
+                const std::int64_t count = last - first + 1;
+                constexpr std::int64_t exact = std::int64_t{1} << 52;
+                bool within = true;
+                for (int k = 0; k < 3; ++k) {
+                    const std::int64_t end_value = v[k] + (count - 1) * step_x[k];
+                    within = within && v[k] < exact && v[k] > -exact && end_value < exact && end_value > -exact;
                 }
+                const std::size_t at = row + static_cast<std::size_t>(first);
+                (within ? kernels.visibility_row : kernels::visibility_row_scalar)(
+                    v, step_x.data(), tri.weight.data(), static_cast<std::size_t>(count), &s.depth[at],
+                    reinterpret_cast<const void**>(&s.visible[at]), shade, &s.weight1[at], &s.weight2[at]);
             }
         }
     }

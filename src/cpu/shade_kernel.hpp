@@ -60,7 +60,25 @@ struct Kernels {
     // written as interleaved RGB bytes.
     void (*encode)(const float* r, const float* g, const float* b, std::size_t count, float gamma,
                    std::uint8_t* rgb);
+    // The visibility test along one row of a wide triangle (render.cpp),
+    // pixel i of [0, count): the unbiased edge functions v[k] + i·step[k]
+    // (integers; render.cpp calls this only where they stay below 2^52 in
+    // magnitude along the row, so that a double holds each exactly),
+    // p_k = float(edge k) · weight[k] and 1/w = (p0 + p1) + p2. Where 1/w
+    // is not ≤ depth[i] (nearer, or NaN), it writes depth[i] = 1/w,
+    // visible[i] = triangle, weight1[i] = p1, weight2[i] = p2. The same
+    // float operations, in the same order, in every set; only how many
+    // pixels at a time differs.
+    void (*visibility_row)(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
+                           std::size_t count, float* depth, const void** visible, const void* triangle,
+                           float* weight1, float* weight2);
 };
+
+// visibility_row one pixel at a time: the portable set's, and the other
+// sets' for what is left of a row after their full vectors.
+void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
+                           std::size_t count, float* depth, const void** visible, const void* triangle,
+                           float* weight1, float* weight2);
 
 extern const Kernels portable_kernels;
 extern const Kernels avx2_kernels;    // only valid where the CPU has AVX2 and FMA

@@ -1,11 +1,57 @@
 // The kernels for AVX-512 (F, BW, DQ, VL) with FMA: 16 pixels per
 // instruction. This file alone is compiled with those flags; it runs only
 // where select_kernels finds them (and the OS saves the ZMM registers).
+#include <immintrin.h>
+
+#include <cstdint>
+
 #include "cpu/shade_kernel_impl.hpp"
 
 namespace litkit::kernels {
 
 using Avx512Impl = detail::Impl<xsimd::avx512bw>;
-const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::shade_phong, &Avx512Impl::encode};
+namespace {
+
+// visibility_row eight pixels at a time: AVX-512 DQ converts the 64-bit
+// edge functions to float directly, rounding as the scalar conversion
+// does; then the same float products and sums in 8 lanes, and masked
+// writes where the test passes (the last, partial vector too).
+void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
+                    std::size_t count, float* depth, const void** visible, const void* triangle,
+                    float* weight1, float* weight2) {
+    const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+    __m512i edge[3], step8[3];
+    __m256 w[3];
+    for (int k = 0; k < 3; ++k) {
+        const __m512i s = _mm512_set1_epi64(step[k]);
+        edge[k] = _mm512_add_epi64(_mm512_set1_epi64(v[k]), _mm512_mullo_epi64(lane, s));
+        step8[k] = _mm512_slli_epi64(s, 3);
+        w[k] = _mm256_set1_ps(weight[k]);
+    }
+    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(triangle)));
+    for (std::size_t i = 0; i < count; i += 8) {
+        const __mmask8 lanes =
+            count - i >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << (count - i)) - 1u);
+        const __m256 p0 = _mm256_mul_ps(_mm512_cvtepi64_ps(edge[0]), w[0]);
+        const __m256 p1 = _mm256_mul_ps(_mm512_cvtepi64_ps(edge[1]), w[1]);
+        const __m256 p2 = _mm256_mul_ps(_mm512_cvtepi64_ps(edge[2]), w[2]);
+        const __m256 inverse_w = _mm256_add_ps(_mm256_add_ps(p0, p1), p2);
+        const __m256 old_depth = _mm256_maskz_loadu_ps(lanes, depth + i);
+        // !(1/w ≤ depth): nearer, or NaN.
+        const __mmask8 nearer = _mm256_mask_cmp_ps_mask(lanes, inverse_w, old_depth, _CMP_NLE_UQ);
+        if (nearer) {
+            _mm256_mask_storeu_ps(depth + i, nearer, inverse_w);
+            _mm256_mask_storeu_ps(weight1 + i, nearer, p1);
+            _mm256_mask_storeu_ps(weight2 + i, nearer, p2);
+            _mm512_mask_storeu_epi64(visible + i, nearer, tri);
+        }
+        for (int k = 0; k < 3; ++k) edge[k] = _mm512_add_epi64(edge[k], step8[k]);
+    }
+}
+
+}  // namespace
+
+const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::shade_phong,
+                             &Avx512Impl::encode, &visibility_row};
 
 }  // namespace litkit::kernels
