@@ -4,6 +4,9 @@
 // set this CPU runs is checked; the test says which ran and which it skipped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -82,4 +85,142 @@ TEST(Kernels, InterpolateRoundsAsTheScalarFormulasOnEverySpanLength) {
         }
         EXPECT_EQ(compared, 6 * 2 * (70 * 71 / 2));
     }
+}
+
+// The visibility kernels (render.cpp's wide-triangle rows and small
+// triangles) against the rule written out here pixel by pixel: random edge
+// functions and depths (some NaN, some equal to the new 1/w), every row
+// length and box width, so that every lane, the last partial vector and the
+// ninth pixel of a small triangle's row are exercised.
+namespace {
+
+struct VisibilityBuffers {
+    std::vector<float> depth, weight1, weight2;
+    std::vector<const void*> visible;
+    explicit VisibilityBuffers(std::size_t n) : depth(n), weight1(n), weight2(n), visible(n) {}
+    bool operator==(const VisibilityBuffers& other) const {
+        return std::memcmp(depth.data(), other.depth.data(), depth.size() * sizeof(float)) == 0 &&
+               std::memcmp(weight1.data(), other.weight1.data(), depth.size() * sizeof(float)) == 0 &&
+               std::memcmp(weight2.data(), other.weight2.data(), depth.size() * sizeof(float)) == 0 &&
+               visible == other.visible;
+    }
+};
+
+// One pixel's test and writes, as render.cpp states them.
+void expect_pixel(float p0, float p1, float p2, const void* triangle, VisibilityBuffers& b, std::size_t i) {
+    volatile float sum = p0 + p1;
+    const float inverse_w = sum + p2;
+    if (inverse_w <= b.depth[i]) return;
+    b.depth[i] = inverse_w;
+    b.visible[i] = triangle;
+    b.weight1[i] = p1;
+    b.weight2[i] = p2;
+}
+
+}  // namespace
+
+TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
+    std::mt19937 random(61);
+    std::uniform_int_distribution<std::int64_t> value(-(std::int64_t{1} << 40), std::int64_t{1} << 40),
+        step(-(std::int64_t{1} << 20), std::int64_t{1} << 20);
+    std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-13f, 1e-11f);
+    int triangle_tag = 0;
+    for (const Kernels* set : runnable_sets()) {
+        std::printf("checking the %s set's visibility_row\n", set->name);
+        for (std::size_t count = 0; count <= 40; ++count) {
+            for (int trial = 0; trial < 20; ++trial) {
+                const std::int64_t v[3] = {value(random), value(random), value(random)};
+                const std::int64_t s[3] = {step(random), step(random), step(random)};
+                const float w[3] = {weight(random), weight(random), weight(random)};
+                VisibilityBuffers got(count + 1), expected(count + 1);
+                for (std::size_t i = 0; i <= count; ++i) {
+                    got.depth[i] = i % 7 == 3 ? std::nanf("") : depth(random);
+                    got.weight1[i] = got.weight2[i] = -1.0f;
+                }
+                expected = got;
+                const void* triangle = &triangle_tag;
+                set->visibility_row(v, s, w, count, got.depth.data(), got.visible.data(), triangle,
+                                    got.weight1.data(), got.weight2.data());
+                for (std::size_t i = 0; i < count; ++i) {
+                    const auto at = static_cast<std::int64_t>(i);
+                    expect_pixel(static_cast<float>(v[0] + at * s[0]) * w[0],
+                                 static_cast<float>(v[1] + at * s[1]) * w[1],
+                                 static_cast<float>(v[2] + at * s[2]) * w[2], triangle, expected, i);
+                }
+                ASSERT_TRUE(got == expected) << set->name << ": a row of " << count << ", trial " << trial;
+            }
+        }
+    }
+}
+
+TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
+    std::mt19937 random(62);
+    std::uniform_int_distribution<std::int32_t> edge(-3000, 3000), along(-700, 700);
+    std::uniform_int_distribution<int> bias(-1, 0), offset(0, 5);
+    std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-5f, 1e-3f);
+    int triangle_tag = 0;
+    int sets_with_kernel = 0;
+    for (const Kernels* set : runnable_sets()) {
+        if (!set->visibility_small) {
+            std::printf("the %s set has no visibility_small (render.cpp tests pixels one by one)\n", set->name);
+            continue;
+        }
+        ++sets_with_kernel;
+        std::printf("checking the %s set's visibility_small\n", set->name);
+        int covered_ninth = 0;
+        for (int span = 0; span <= 8; ++span) {
+            for (int rows = 1; rows <= 9; ++rows) {
+                for (int trial = 0; trial < 40; ++trial) {
+                    litkit::kernels::SmallTriangle t{};
+                    for (int k = 0; k < 3; ++k) {
+                        t.bias[k] = bias(random);
+                        // Mostly inside, so that whole rows are covered too.
+                        t.origin[k] = edge(random) + 2000 + t.bias[k];
+                        t.step_x[k] = along(random);
+                        t.step_y[k] = along(random);
+                        t.weight[k] = weight(random);
+                    }
+                    t.rows = rows;
+                    t.span = span;
+                    t.min_x = offset(random);
+                    t.triangle = &triangle_tag;
+                    const std::size_t stride = static_cast<std::size_t>(t.min_x + span + 3);
+                    VisibilityBuffers got(stride * static_cast<std::size_t>(rows)), expected = got;
+                    for (std::size_t i = 0; i < got.depth.size(); ++i) {
+                        got.depth[i] = i % 5 == 2 ? std::nanf("") : depth(random);
+                        got.weight1[i] = got.weight2[i] = -1.0f;
+                    }
+                    expected = got;
+                    std::vector<int> begin_got(static_cast<std::size_t>(rows), 100), end_got(begin_got.size(), 0);
+                    std::vector<int> begin_expected = begin_got, end_expected = end_got;
+                    set->visibility_small(t, got.depth.data(), got.visible.data(), got.weight1.data(),
+                                          got.weight2.data(), stride, begin_got.data(), end_got.data());
+                    for (int r = 0; r < rows; ++r) {
+                        for (int x = 0; x <= span; ++x) {
+                            std::int32_t e[3];
+                            bool inside = true;
+                            for (int k = 0; k < 3; ++k) {
+                                e[k] = t.origin[k] + r * t.step_y[k] + x * t.step_x[k];
+                                inside = inside && e[k] >= 0;
+                            }
+                            if (!inside) continue;
+                            if (x == 8) ++covered_ninth;
+                            begin_expected[r] = std::min(begin_expected[r], t.min_x + x);
+                            end_expected[r] = std::max(end_expected[r], t.min_x + x + 1);
+                            expect_pixel(static_cast<float>(e[0] - t.bias[0]) * t.weight[0],
+                                         static_cast<float>(e[1] - t.bias[1]) * t.weight[1],
+                                         static_cast<float>(e[2] - t.bias[2]) * t.weight[2], t.triangle,
+                                         expected, static_cast<std::size_t>(r) * stride +
+                                                       static_cast<std::size_t>(t.min_x + x));
+                        }
+                    }
+                    ASSERT_TRUE(got == expected) << set->name << ": span " << span << ", rows " << rows;
+                    ASSERT_EQ(begin_got, begin_expected) << set->name << ": span " << span << ", rows " << rows;
+                    ASSERT_EQ(end_got, end_expected) << set->name << ": span " << span << ", rows " << rows;
+                }
+            }
+        }
+        EXPECT_GT(covered_ninth, 50) << "the ninth pixel of a row was covered too rarely to test it";
+    }
+    if (sets_with_kernel == 0) std::printf("no set on this CPU has visibility_small\n");
 }

@@ -101,6 +101,19 @@ TEST(Render, Avx512Avx2AndPortableKernelsDrawTheSameBytes) {
         scene.output.height = 181;
         scenes.push_back(scene);
     }
+    // Triangles of every size around the small-triangle rasterizer's limit
+    // (8 pixels across: rows of 9 pixels, one more than an AVX2 vector).
+    for (int width = 96; width <= 420; width += 27) {
+        litkit::Scene scene = small(litkit::default_scene());
+        litkit::SceneObject sphere;
+        sphere.name = "sphere";
+        sphere.shape = litkit::SphereShape{1.2f, 40, 20};
+        sphere.material = scene.objects.front().material;
+        scene.objects = {sphere};
+        scene.output.width = width;
+        scene.output.height = width * 2 / 3 + 1;
+        scenes.push_back(scene);
+    }
     const litkit::Scene base = small(litkit::default_scene());
     for (int model = 0; model < litkit::reflection_count; ++model) {
         const auto reflection = static_cast<litkit::Reflection>(model);

@@ -686,6 +686,28 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const float weight1 = tri.weight[1];
             const float weight2 = tri.weight[2];
 
+            if (tri.small && kernels.visibility_small) {
+                // The same pixels and values as below, a row at a time in the
+                // kernel set's lanes.
+                kernels::SmallTriangle small;
+                for (int k = 0; k < 3; ++k) {
+                    small.origin[k] = static_cast<std::int32_t>(origin[k] + bias[k]);
+                    small.step_x[k] = static_cast<std::int32_t>(step_x[k]);
+                    small.step_y[k] = static_cast<std::int32_t>(step_y[k]);
+                    small.bias[k] = static_cast<std::int32_t>(bias[k]);
+                    small.weight[k] = tri.weight[k];
+                }
+                small.rows = y1 - y0 + 1;
+                small.span = tri.max_x - tri.min_x;
+                small.min_x = tri.min_x;
+                small.triangle = shade;
+                const std::size_t first_row = static_cast<std::size_t>(y0 - row_begin) * width;
+                kernels.visibility_small(small, &s.depth[first_row],
+                                         reinterpret_cast<const void**>(&s.visible[first_row]),
+                                         &s.weight1[first_row], &s.weight2[first_row], width,
+                                         &s.touched_begin[y0 - row_begin], &s.touched_end[y0 - row_begin]);
+                continue;
+            }
 #if defined(__SSE2__)
             if (tri.small) {
                 // The same pixels and values as below, with the three edge

@@ -41,6 +41,23 @@ struct ColorRun {
     float* b;
 };
 
+// A small triangle as its visibility pass sees it (render.cpp: at most 8
+// pixels across and down, so its edge functions fit 32 bits by far and
+// convert to float exactly): the biased edge functions at its box's first
+// pixel of its first row, their steps along a row and down, the bias (0 or
+// −1, the fill rule), the corners' weights, and where it goes.
+struct SmallTriangle {
+    std::int32_t origin[3];  // biased, at (min_x, first row)
+    std::int32_t step_x[3];
+    std::int32_t step_y[3];
+    std::int32_t bias[3];
+    float weight[3];
+    int rows;   // rows of the box within the band
+    int span;   // max_x − min_x: the box has span + 1 pixels a row (at most 9)
+    int min_x;  // the box's first column
+    const void* triangle;
+};
+
 struct Kernels {
     const char* name;
     // docs/spec.md §3 Phong shading's varyings along a span of pixels of one
@@ -72,6 +89,17 @@ struct Kernels {
     void (*visibility_row)(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
                            std::size_t count, float* depth, const void** visible, const void* triangle,
                            float* weight1, float* weight2);
+    // The visibility pass of a small triangle, all its rows: the pixels of
+    // each row whose three biased edge functions are ≥ 0 are covered; each
+    // covered pixel gets the test and writes above (p_k from the unbiased
+    // edge functions); touched_begin/touched_end of the row widen to its
+    // covered pixels. The buffers and the touched arrays start at the
+    // triangle's first row (and column 0); `stride` is the buffers' row
+    // length. Null in the portable set, whose pixels render.cpp tests one
+    // at a time.
+    void (*visibility_small)(const SmallTriangle& triangle, float* depth, const void** visible,
+                             float* weight1, float* weight2, std::size_t stride, int* touched_begin,
+                             int* touched_end);
 };
 
 // visibility_row one pixel at a time: the portable set's, and the other

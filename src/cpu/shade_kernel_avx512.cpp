@@ -3,6 +3,7 @@
 // where select_kernels finds them (and the OS saves the ZMM registers).
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cstdint>
 
 #include "cpu/shade_kernel_impl.hpp"
@@ -49,9 +50,53 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
     }
 }
 
+// visibility_small a row at a time: a row's (at most 9) pixels in the
+// lanes of one vector.
+void visibility_small(const SmallTriangle& t, float* depth, const void** visible, float* weight1,
+                      float* weight2, std::size_t stride, int* touched_begin, int* touched_end) {
+    const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __mmask16 in_box = _mm512_cmple_epi32_mask(lane, _mm512_set1_epi32(t.span));
+    __m512i along[3], bias[3];
+    __m512 w[3];
+    for (int k = 0; k < 3; ++k) {
+        along[k] = _mm512_mullo_epi32(lane, _mm512_set1_epi32(t.step_x[k]));
+        bias[k] = _mm512_set1_epi32(t.bias[k]);
+        w[k] = _mm512_set1_ps(t.weight[k]);
+    }
+    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(t.triangle)));
+    std::int32_t row_origin[3] = {t.origin[0], t.origin[1], t.origin[2]};
+    for (int row = 0; row < t.rows; ++row) {
+        __m512i e[3];
+        __mmask16 covered = in_box;
+        for (int k = 0; k < 3; ++k) {
+            e[k] = _mm512_add_epi32(_mm512_set1_epi32(row_origin[k]), along[k]);
+            covered = _mm512_mask_cmpge_epi32_mask(covered, e[k], _mm512_setzero_si512());
+            row_origin[k] += t.step_y[k];
+        }
+        if (!covered) continue;
+        const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
+        const __m512 p0 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[0], bias[0])), w[0]);
+        const __m512 p1 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[1], bias[1])), w[1]);
+        const __m512 p2 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[2], bias[2])), w[2]);
+        const __m512 inverse_w = _mm512_add_ps(_mm512_add_ps(p0, p1), p2);
+        const __m512 old_depth = _mm512_maskz_loadu_ps(covered, depth + at);
+        const __mmask16 nearer = _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
+        if (nearer) {
+            _mm512_mask_storeu_ps(depth + at, nearer, inverse_w);
+            _mm512_mask_storeu_ps(weight1 + at, nearer, p1);
+            _mm512_mask_storeu_ps(weight2 + at, nearer, p2);
+            _mm512_mask_storeu_epi64(visible + at, static_cast<__mmask8>(nearer), tri);
+            _mm512_mask_storeu_epi64(visible + at + 8, static_cast<__mmask8>(nearer >> 8), tri);
+        }
+        const unsigned bits = covered;
+        touched_begin[row] = std::min(touched_begin[row], t.min_x + __builtin_ctz(bits));
+        touched_end[row] = std::max(touched_end[row], t.min_x + 32 - __builtin_clz(bits));
+    }
+}
+
 }  // namespace
 
 const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::shade_phong,
-                             &Avx512Impl::encode, &visibility_row};
+                             &Avx512Impl::encode, &visibility_row, &visibility_small};
 
 }  // namespace litkit::kernels

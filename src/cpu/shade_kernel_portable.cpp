@@ -28,6 +28,6 @@ void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], 
 }
 
 const Kernels portable_kernels{"portable", &PortableImpl::interpolate, &PortableImpl::shade_phong,
-                               &PortableImpl::encode, &visibility_row_scalar};
+                               &PortableImpl::encode, &visibility_row_scalar, nullptr};
 
 }  // namespace litkit::kernels
