@@ -121,10 +121,12 @@ TEST(GlBackend, ReportsTheRenderer) {
 }
 
 TEST(GlBackend, ReadBackAtEverySizeKeepsEveryRowAndPixelInPlace) {
-    // The read-back (opengl_core.inc's read_rgb) goes in bands of rows and
-    // converts eight pixels at a time where the CPU has AVX2 (gl_renderer.cpp),
-    // the rest one by one: widths around and between those multiples, and
-    // heights of one band (1920 wide: 34 rows), several, and a part of one.
+    // The read-back (opengl_core.inc's read_rgb, or gl_renderer.cpp's
+    // read_rgb_in_step, which converts each band on a helper thread while
+    // the next is read, from two buffers in turn) goes in bands of rows and
+    // converts eight pixels at a time where the CPU has AVX2, the rest one
+    // by one: widths around and between those multiples, and heights of one
+    // band (1920 wide: 34 rows), several, and a part of one.
     for (const auto& [width, height] : std::vector<std::pair<int, int>>{
              {1, 5}, {7, 3}, {8, 4}, {9, 9}, {15, 2}, {16, 7}, {17, 11}, {37, 23}, {161, 40}, {1920, 34}, {1920, 101}}) {
         litkit::Scene scene = litkit::default_scene();

@@ -3,19 +3,24 @@
 #include <dlfcn.h>
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+#if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
+#endif
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -100,6 +105,7 @@ struct GlRenderer::Impl {
     std::optional<core::OffscreenTarget> target;
     core::FrameSettings frame{};
     std::size_t triangles = 0;
+    std::vector<std::uint8_t> bands[2];  // read_rgb_in_step's band buffers, kept between frames
 
     ~Impl() {
         if (context) {
@@ -259,6 +265,7 @@ Image GlRenderer::render() {
 
 namespace {
 
+#if defined(__x86_64__) || defined(__i386__)
 // OffscreenTarget::rgba_row_to_rgb with AVX2: eight pixels at a time, each
 // 128-bit half's four shuffled to twelve bytes, the halves joined into 24.
 // The same bytes; a fifth of the instructions, which at 1920×1080 was most of
@@ -277,6 +284,59 @@ __attribute__((target("avx2"))) void rgba_row_to_rgb_avx2(const std::uint8_t* fr
     }
     if (x < count) core::OffscreenTarget::rgba_row_to_rgb(from + 4 * x, to + 3 * x, count - x);
 }
+#endif
+
+using ConvertRow = void (*)(const std::uint8_t*, std::uint8_t*, std::size_t);
+
+// OffscreenTarget::read_rgb with the conversion on a second thread: while
+// this thread reads band k + 1 (OpenGL calls stay on the context's thread),
+// a helper converts band k, each from a buffer of its own. The same bands,
+// rows and bytes as read_rgb; the helper only hides the conversion, which
+// took longer than the reading (docs/performance.md). False when no helper
+// thread could be started (the caller reads as before).
+bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, ConvertRow convert_row,
+                      std::vector<std::uint8_t> (&buffers)[2]) {
+    const int width = target.width(), height = target.height();
+    const std::size_t w = static_cast<std::size_t>(width);
+    const int band = target.band_rows();
+    const int band_count = (height + band - 1) / band;
+    for (auto& buffer : buffers) buffer.resize(w * static_cast<std::size_t>(std::min(band, height)) * 4);
+    std::atomic<int> read{-1};       // the last band read into its buffer
+    std::atomic<int> converted{-1};  // the last band converted
+    auto wait_until = [](const std::atomic<int>& counter, int at_least) {
+        while (counter.load(std::memory_order_acquire) < at_least) {
+#if defined(__x86_64__) || defined(__i386__)
+            _mm_pause();
+#endif
+        }
+    };
+    std::thread helper;
+    try {
+        helper = std::thread([&] {
+            for (int k = 0; k < band_count; ++k) {
+                wait_until(read, k);
+                const int first = k * band, rows = std::min(band, height - first);
+                const std::uint8_t* from = buffers[k % 2].data();
+                for (int r = 0; r < rows; ++r)
+                    convert_row(from + static_cast<std::size_t>(r) * w * 4,
+                                rgb + static_cast<std::size_t>(height - 1 - first - r) * w * 3, w);
+                converted.store(k, std::memory_order_release);
+            }
+        });
+    } catch (const std::system_error&) {
+        return false;
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int k = 0; k < band_count; ++k) {
+        wait_until(converted, k - 2);  // band k − 2, in the same buffer, is done with
+        const int first = k * band, rows = std::min(band, height - first);
+        glReadPixels(0, first, width, rows, GL_RGBA, GL_UNSIGNED_BYTE, buffers[k % 2].data());
+        read.store(k, std::memory_order_release);
+    }
+    helper.join();
+    return true;
+}
 
 }  // namespace
 
@@ -290,9 +350,16 @@ void GlRenderer::render_into(Image& image) {
     }
     if (image.width != gl.target->width() || image.height != gl.target->height())
         image = Image(gl.target->width(), gl.target->height());
+#if defined(__x86_64__) || defined(__i386__)
     static const auto convert_row = __builtin_cpu_supports("avx2") ? rgba_row_to_rgb_avx2
                                                                    : core::OffscreenTarget::rgba_row_to_rgb;
-    gl.target->read_rgb(image.rgb.data(), convert_row);
+#else
+    constexpr auto convert_row = core::OffscreenTarget::rgba_row_to_rgb;
+#endif
+    // Where there is a second core for the helper.
+    static const bool in_step = std::thread::hardware_concurrency() >= 2;
+    if (!in_step || !read_rgb_in_step(*gl.target, image.rgb.data(), convert_row, gl.bands))
+        gl.target->read_rgb(image.rgb.data(), convert_row);
 }
 
 void GlRenderer::draw_to(unsigned framebuffer) {
