@@ -286,7 +286,7 @@ __attribute__((target("avx2"))) void rgba_row_to_rgb_avx2(const std::uint8_t* fr
 }
 #endif
 
-using ConvertRow = void (*)(const std::uint8_t*, std::uint8_t*, std::size_t);
+using ConvertRow = core::OffscreenTarget::ConvertRow;
 
 // OffscreenTarget::read_rgb with the conversion on a second thread: while
 // this thread reads band k + 1 (OpenGL calls stay on the context's thread),
@@ -296,11 +296,8 @@ using ConvertRow = void (*)(const std::uint8_t*, std::uint8_t*, std::size_t);
 // thread could be started (the caller reads as before).
 bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, ConvertRow convert_row,
                       std::vector<std::uint8_t> (&buffers)[2]) {
-    const int width = target.width(), height = target.height();
-    const std::size_t w = static_cast<std::size_t>(width);
-    const int band = target.band_rows();
-    const int band_count = (height + band - 1) / band;
-    for (auto& buffer : buffers) buffer.resize(w * static_cast<std::size_t>(std::min(band, height)) * 4);
+    const int band_count = target.band_count();
+    for (auto& buffer : buffers) buffer.resize(target.band_bytes());
     std::atomic<int> read{-1};       // the last band read into its buffer
     std::atomic<int> converted{-1};  // the last band converted
     auto wait_until = [](const std::atomic<int>& counter, int at_least) {
@@ -315,23 +312,17 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
         helper = std::thread([&] {
             for (int k = 0; k < band_count; ++k) {
                 wait_until(read, k);
-                const int first = k * band, rows = std::min(band, height - first);
-                const std::uint8_t* from = buffers[k % 2].data();
-                for (int r = 0; r < rows; ++r)
-                    convert_row(from + static_cast<std::size_t>(r) * w * 4,
-                                rgb + static_cast<std::size_t>(height - 1 - first - r) * w * 3, w);
+                target.convert_band(k, buffers[k % 2].data(), rgb, convert_row);
                 converted.store(k, std::memory_order_release);
             }
         });
     } catch (const std::system_error&) {
         return false;
     }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    target.begin_read();
     for (int k = 0; k < band_count; ++k) {
         wait_until(converted, k - 2);  // band k − 2, in the same buffer, is done with
-        const int first = k * band, rows = std::min(band, height - first);
-        glReadPixels(0, first, width, rows, GL_RGBA, GL_UNSIGNED_BYTE, buffers[k % 2].data());
+        target.read_band(k, buffers[k % 2].data());
         read.store(k, std::memory_order_release);
     }
     helper.join();
