@@ -30,7 +30,7 @@ ThreadPool::~ThreadPool() {
 // came first, those lines moved between the cores' caches every frame, and
 // the 261k sphere's vertex stage took longer on 2 threads than on 1
 // (docs/performance.md, "Threads and caches").
-void ThreadPool::run_task(const Task& task, std::size_t /*count*/, int worker) {
+void ThreadPool::run_task(const Task& task, int worker) {
     const std::size_t stretches = static_cast<std::size_t>(size());
     for (std::size_t k = 0; k < stretches; ++k) {
         Stretch& stretch = stretches_[(static_cast<std::size_t>(worker) + k) % stretches];
@@ -54,7 +54,6 @@ void ThreadPool::worker_loop(int worker) {
     std::size_t seen_generation = 0;
     for (;;) {
         Task task;
-        std::size_t count = 0;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stopping_ || generation_ != seen_generation; });
@@ -63,10 +62,9 @@ void ThreadPool::worker_loop(int worker) {
             // A worker waking after the job finished finds task_ cleared.
             if (!task_.call) continue;
             task = task_;
-            count = job_count_;
             ++busy_workers_;
         }
-        run_task(task, count, worker);
+        run_task(task, worker);
         {
             std::lock_guard lock(mutex_);
             --busy_workers_;
@@ -80,7 +78,6 @@ void ThreadPool::run(std::size_t count, Trampoline call, const void* context) {
     {
         std::lock_guard lock(mutex_);
         task_ = Task{call, context};
-        job_count_ = count;
         const std::size_t stretches = static_cast<std::size_t>(size());
         for (std::size_t s = 0; s < stretches; ++s) {
             stretches_[s].next.store(count * s / stretches, std::memory_order_relaxed);
@@ -90,7 +87,7 @@ void ThreadPool::run(std::size_t count, Trampoline call, const void* context) {
         ++generation_;
     }
     wake_.notify_all();
-    run_task(Task{call, context}, count, 0);
+    run_task(Task{call, context}, 0);
     std::exception_ptr failure;
     {
         std::unique_lock lock(mutex_);

@@ -47,14 +47,13 @@ private:
     };
     void run(std::size_t count, Trampoline call, const void* context);
     void worker_loop(int worker);
-    void run_task(const Task& task, std::size_t count, int worker);
+    void run_task(const Task& task, int worker);
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
     Task task_;  // call == nullptr: no job under way
-    std::size_t job_count_ = 0;
     // The indices of the job under way in size() stretches, one per thread
     // to start with; a line each, so that threads taking from their own do
     // not contend.
