@@ -300,12 +300,19 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
     for (auto& buffer : buffers) buffer.resize(target.band_bytes());
     std::atomic<int> read{-1};       // the last band read into its buffer
     std::atomic<int> converted{-1};  // the last band converted
+    // A short spin (the other side is usually a band away), then a real
+    // wait: spinning on, a thread could hold the core the one it waits for
+    // needs, and the frame then took a scheduler tick per band (a whole run
+    // at 20 ms a frame instead of 3.6, now and then).
     auto wait_until = [](const std::atomic<int>& counter, int at_least) {
-        while (counter.load(std::memory_order_acquire) < at_least) {
+        for (int spin = 0; spin < 4096; ++spin) {
+            if (counter.load(std::memory_order_acquire) >= at_least) return;
 #if defined(__x86_64__) || defined(__i386__)
             _mm_pause();
 #endif
         }
+        for (int seen; (seen = counter.load(std::memory_order_acquire)) < at_least;)
+            counter.wait(seen, std::memory_order_acquire);
     };
     std::thread helper;
     try {
@@ -314,6 +321,7 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
                 wait_until(read, k);
                 target.convert_band(k, buffers[k % 2].data(), rgb, convert_row);
                 converted.store(k, std::memory_order_release);
+                converted.notify_one();
             }
         });
     } catch (const std::system_error&) {
@@ -324,6 +332,7 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
         wait_until(converted, k - 2);  // band k − 2, in the same buffer, is done with
         target.read_band(k, buffers[k % 2].data());
         read.store(k, std::memory_order_release);
+        read.notify_one();
     }
     helper.join();
     return true;
