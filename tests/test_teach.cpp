@@ -348,12 +348,16 @@ litkit::Scene model_balls(litkit::Shading shading, float gamma) {
 
 // Every pixel of the scene: explain's rgb is render's pixel; the parts add
 // up to the sum; the sum gives the pixel.
+// One explainer serves every pixel in turn, so a pixel's explanation must
+// not lean on the one before. It draws on one thread (each pixel is a whole
+// frame, too small to share), the picture it is held to on the default count.
 void expect_every_pixel_explained(const litkit::Scene& scene, const std::string& label) {
     const litkit::Image image = litkit::render(scene);
+    litkit::PixelExplainer explainer(scene, litkit::RenderOptions{.threads = 1});
     int hits = 0, checked = 0;
     for (int y = 0; y < scene.output.height; ++y) {
         for (int x = 0; x < scene.output.width; ++x) {
-            const litkit::PixelExplanation e = litkit::explain_pixel(scene, x, y);
+            const litkit::PixelExplanation e = explainer.explain(x, y);
             const std::uint8_t* pixel = image.pixel(x, y);
             ASSERT_EQ(e.rgb, (litkit::Rgb8{pixel[0], pixel[1], pixel[2]}))
                 << label << " pixel " << x << "," << y;
@@ -413,6 +417,33 @@ TEST(Explain, EveryPixelOfTheDefaultScene) {
     scene.output.width = 64;
     scene.output.height = 48;
     expect_every_pixel_explained(scene, "default");
+}
+
+TEST(Explain, AnExplainerGivesWhatExplainPixelGivesInAnyOrder) {
+    litkit::Scene scene = model_balls(litkit::Shading::Gouraud, 2.2f);
+    litkit::PixelExplainer explainer(scene);
+    // Pixels on two different balls and the background, the first again
+    // last, and the scene changed after the explainer copied it.
+    const std::array<std::array<int, 2>, 4> pixels{{{14, 10}, {41, 29}, {0, 0}, {14, 10}}};
+    const litkit::Scene original = scene;
+    scene.lights.clear();
+    for (const auto& [x, y] : pixels) {
+        const litkit::PixelExplanation a = explainer.explain(x, y);
+        const litkit::PixelExplanation b = litkit::explain_pixel(original, x, y);
+        EXPECT_EQ(a.rgb, b.rgb) << x << "," << y;
+        EXPECT_EQ(a.hit, b.hit) << x << "," << y;
+        EXPECT_EQ(a.object, b.object) << x << "," << y;
+        EXPECT_EQ(a.triangle, b.triangle) << x << "," << y;
+        EXPECT_EQ(a.corners, b.corners) << x << "," << y;
+        EXPECT_EQ(a.sum, b.sum) << x << "," << y;
+        ASSERT_EQ(a.evaluations.size(), b.evaluations.size()) << x << "," << y;
+        for (std::size_t k = 0; k < a.evaluations.size(); ++k)
+            EXPECT_EQ(a.evaluations[k].terms.total, b.evaluations[k].terms.total);
+    }
+    EXPECT_TRUE(explainer.explain(14, 10).hit);
+    EXPECT_NE(explainer.explain(41, 29).object, explainer.explain(14, 10).object);
+    EXPECT_THROW(explainer.explain(54, 0), litkit::ArgumentError);
+    EXPECT_THROW(explainer.explain(0, -1), litkit::ArgumentError);
 }
 
 TEST(Explain, ShowsTheOrangeCubesCentreStepByStep) {

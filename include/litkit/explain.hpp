@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,29 @@ struct PixelExplanation {
 /// [lighting]'s models as `render` uses them; `options` as for render.
 /// Throws ArgumentError for a pixel outside the image.
 PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOptions& options = {});
+
+/// Explains many pixels of one scene: what explain_pixel does, with the
+/// renderer (meshes, normals, threads) built once, not once a pixel. Each
+/// explain() draws a frame, as explain_pixel does.
+class PixelExplainer {
+public:
+    /// The preconditions and errors of Renderer's constructor. The scene is
+    /// copied: later changes to the caller's scene are not seen.
+    explicit PixelExplainer(const Scene& scene, RenderOptions options = {});
+    ~PixelExplainer();
+    /// Not copyable: it owns a Renderer.
+    PixelExplainer(const PixelExplainer&) = delete;
+    /// Not copyable either.
+    PixelExplainer& operator=(const PixelExplainer&) = delete;
+
+    /// Pixel (x, y), exactly as explain_pixel(scene, x, y, options) gives it.
+    /// Throws ArgumentError for a pixel outside the image.
+    PixelExplanation explain(int x, int y);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 /// The equations at point p with normal N (normalised here; it must not be
 /// zero) under the scene's lights, seen from its observer, for a material and

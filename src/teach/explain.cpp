@@ -4,6 +4,7 @@
 #include "litkit/error.hpp"
 
 #include <glm/geometric.hpp>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -36,9 +37,41 @@ glm::vec3 unit(const glm::vec3& v) { return (1.0f / std::sqrt(glm::dot(v, v))) *
 
 }  // namespace
 
-PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOptions& options) {
-    Renderer renderer(scene, options);
-    const PixelProbe probe = renderer.probe(x, y);
+struct PixelExplainer::Impl {
+    Impl(const Scene& scene_in, const RenderOptions& options_in)
+        : scene(scene_in),
+          options(options_in),
+          renderer(scene, options),
+          lights(scene_lights(scene)),
+          meshes(scene.objects.size()) {}
+
+    // The object in the world as the renderer has it (the same function),
+    // built the first time one of its pixels is explained.
+    const WorldMesh& mesh(std::size_t object) {
+        std::optional<WorldMesh>& slot = meshes.at(object);
+        if (!slot) {
+            const SceneObject& o = scene.objects.at(object);
+            slot = world_mesh(o, normal_options(scene, o));
+        }
+        return *slot;
+    }
+
+    Scene scene;
+    RenderOptions options;
+    Renderer renderer;
+    std::vector<Light> lights;
+    std::vector<std::optional<WorldMesh>> meshes;
+};
+
+PixelExplainer::PixelExplainer(const Scene& scene, RenderOptions options)
+    : impl_(std::make_unique<Impl>(scene, options)) {}
+
+PixelExplainer::~PixelExplainer() = default;
+
+PixelExplanation PixelExplainer::explain(int x, int y) {
+    const Scene& scene = impl_->scene;
+    const RenderOptions& options = impl_->options;
+    const PixelProbe probe = impl_->renderer.probe(x, y);
     PixelExplanation explanation;
     explanation.x = x;
     explanation.y = y;
@@ -58,8 +91,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
     explanation.weights = probe.weights;
     explanation.sum = probe.intensity;
 
-    // The object in the world as the renderer has it (the same function).
-    const WorldMesh mesh = world_mesh(object, normal_options(scene, object));
+    const WorldMesh& mesh = impl_->mesh(probe.object);
     for (int k = 0; k < 3; ++k) {
         explanation.corners[static_cast<std::size_t>(k)] =
             mesh.positions.at(probe.vertices[static_cast<std::size_t>(k)]);
@@ -73,7 +105,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
     explanation.face_normal = face_normal(mesh.positions.at(wound[0]), mesh.positions.at(wound[1]),
                                           mesh.positions.at(wound[2]));
 
-    const std::vector<Light> lights = scene_lights(scene);
+    const std::vector<Light>& lights = impl_->lights;
     const glm::vec3 eye = scene.observer.position;
     switch (explanation.shading) {
         case Shading::Flat:
@@ -95,6 +127,10 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
             break;
     }
     return explanation;
+}
+
+PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOptions& options) {
+    return PixelExplainer(scene, options).explain(x, y);
 }
 
 PointEvaluation explain_point(const Scene& scene, Reflection reflection, const Material& material,
