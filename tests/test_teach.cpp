@@ -349,8 +349,8 @@ litkit::Scene model_balls(litkit::Shading shading, float gamma) {
 // Every pixel of the scene: explain's rgb is render's pixel; the parts add
 // up to the sum; the sum gives the pixel.
 // One explainer serves every pixel in turn, so a pixel's explanation must
-// not lean on the one before. It draws on one thread (each pixel is a whole
-// frame, too small to share), the picture it is held to on the default count.
+// not lean on the one before. It draws on one thread (each pixel's drawing
+// is too small to share), the picture it is held to on the default count.
 void expect_every_pixel_explained(const litkit::Scene& scene, const std::string& label) {
     const litkit::Image image = litkit::render(scene);
     litkit::PixelExplainer explainer(scene, litkit::RenderOptions{.threads = 1});

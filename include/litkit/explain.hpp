@@ -65,7 +65,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
 
 /// Explains many pixels of one scene: what explain_pixel does, with the
 /// renderer (meshes, normals, threads) built once, not once a pixel. Each
-/// explain() draws a frame, as explain_pixel does.
+/// explain() draws again, as explain_pixel does (Renderer::probe).
 class PixelExplainer {
 public:
     /// The preconditions and errors of Renderer's constructor. The scene is

@@ -103,7 +103,8 @@ public:
     /// update that moved, reshaped, added or removed an object).
     std::size_t mesh_builds() const;
 
-    /// Draws one frame and reports how pixel (x, y) got its value. Throws
+    /// Draws the pixel's band of rows (every stage before it for the whole
+    /// frame) and reports how pixel (x, y) got its value. Throws
     /// ArgumentError outside the image.
     PixelProbe probe(int x, int y);
 
@@ -113,7 +114,8 @@ public:
     int thread_count() const;
     /// The set of per-pixel kernels in use: "avx512", "avx2" or "portable".
     const char* kernel_set() const;
-    /// Pixels the last frame covered, each shaded once (hidden ones are not).
+    /// Pixels the last frame covered, each shaded once (hidden ones are not;
+    /// after probe(), those of the pixel's band).
     std::size_t shaded_pixel_count() const;
 
 private:

@@ -1101,6 +1101,12 @@ void Renderer::render_into(Image& image) {
     impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int worker) {
         impl.setup(impl.chunks[c], impl.scratch[static_cast<std::size_t>(worker)], width, height);
     });
+    if (impl.probe_y >= 0) {
+        // probe(): the pixel's band alone. A band's rows depend only on the
+        // triangles binned to it, so the pixel comes out as in a whole frame.
+        impl.rasterize_band(impl.probe_y / band_height, impl.scratch[0], image);
+        return;
+    }
     impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
         impl.rasterize_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)], image);
     });
