@@ -37,7 +37,7 @@ float mix(float q0, float q1, float q2, float a, float b, float c) {
 
 }  // namespace
 
-TEST(Kernels, InterpolateRoundsAsTheScalarFormulasOnEverySpanLength) {
+TEST(Kernels, WeightsAndInterpolationRoundAsTheScalarFormulasOnEveryLength) {
     std::mt19937 random(16);
     std::uniform_real_distribution<float> depth(0.05f, 3.0f), weight(0.0f, 1.0f),
         value(-20.0f, 20.0f);
@@ -60,14 +60,23 @@ TEST(Kernels, InterpolateRoundsAsTheScalarFormulasOnEverySpanLength) {
                 const float face[3] = {0.0f, 0.6f, 0.8f};
                 std::vector<float> out[6];
                 for (auto& o : out) o.assign(count + 1, -1.0f);  // one past: must stay
-                set->interpolate(inverse_w.data(), w1.data(), w2.data(), count, corner,
-                                 faceted ? face : nullptr,
+                std::vector<float> weights[3];
+                for (auto& q : weights) q.assign(count + 1, -1.0f);
+                set->perspective_weights(inverse_w.data(), w1.data(), w2.data(), count,
+                                         weights[0].data(), weights[1].data(), weights[2].data());
+                set->interpolate(weights[0].data(), weights[1].data(), weights[2].data(), count,
+                                 corner, faceted ? face : nullptr,
                                  {out[0].data(), out[1].data(), out[2].data(), out[3].data(),
                                   out[4].data(), out[5].data()});
                 for (std::size_t i = 0; i < count; ++i) {
                     volatile float w = 1.0f / inverse_w[i];
                     volatile float q1 = w1[i] * w, q2 = w2[i] * w;
                     const float q0 = 1.0f - q1 - q2;
+                    const float expected_weights[3] = {q0, q1, q2};
+                    for (int k = 0; k < 3; ++k)
+                        ASSERT_EQ(std::memcmp(&expected_weights[k], &weights[k][i], sizeof(float)), 0)
+                            << set->name << ": " << count << " pixels, pixel " << i << ", q" << k
+                            << ": " << weights[k][i] << " instead of " << expected_weights[k];
                     for (int k = 0; k < 6; ++k) {
                         const float expected = faceted && k >= 3
                                                    ? face[k - 3]
@@ -81,6 +90,7 @@ TEST(Kernels, InterpolateRoundsAsTheScalarFormulasOnEverySpanLength) {
                     }
                 }
                 for (int k = 0; k < 6; ++k) ASSERT_EQ(out[k][count], -1.0f) << "wrote past the span";
+                for (int k = 0; k < 3; ++k) ASSERT_EQ(weights[k][count], -1.0f) << "wrote past the row";
             }
         }
         EXPECT_EQ(compared, 6 * 2 * (70 * 71 / 2));

@@ -243,6 +243,7 @@ struct BandScratch {
     std::vector<const ShadeTriangle*> visible;   // nullptr = background
     std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
     std::vector<float> r, g, b;                  // one row of intensities
+    std::vector<float> q0, q1, q2;               // one row of perspective-correct weights
     std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
@@ -864,7 +865,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     s.r.resize(w);
     s.g.resize(w);
     s.b.resize(w);
-    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz}) v->resize(w);
+    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.q0, &s.q1, &s.q2}) v->resize(w);
     const std::size_t offset = static_cast<std::size_t>(y % band_height) * w;
     const float eye[3] = {scene.observer.position.x, scene.observer.position.y,
                           scene.observer.position.z};
@@ -887,8 +888,15 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     const int band_row = y % band_height;
     const int begin = s.touched_begin[static_cast<std::size_t>(band_row)];
     const int end = std::max(begin, s.touched_end[static_cast<std::size_t>(band_row)]);
+    // Every drawn pixel's perspective-correct weights, a vector at a time.
+    kernels.perspective_weights(&s.depth[offset + begin], &s.weight1[offset + begin],
+                                &s.weight2[offset + begin], static_cast<std::size_t>(end - begin),
+                                &s.q0[begin], &s.q1[begin], &s.q2[begin]);
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);
+        // The triangle a few pixels on, fetched ahead: the visibility buffer
+        // points into the band's binned triangles in no order.
+        if (x + 12 < end) __builtin_prefetch(s.visible[i + 12]);
         const ShadeTriangle* tri = s.visible[i];
         if (!tri) {
             flush();
@@ -905,8 +913,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (object.shading == Shading::Gouraud) {
             flush();
             // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
-            const float w = 1.0f / s.depth[i];
-            const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
+            const float q0 = s.q0[x], q1 = s.q1[x], q2 = s.q2[x];
             glm::vec3 c;
             if (tri->clipped < 0) {
                 const auto& colors = vertex_colors[tri->object];
@@ -959,10 +966,9 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             };
             const bool faceted = object.shading == Shading::Faceted;
             for (std::size_t k = 0; k < count; ++k) {
-                const float w = 1.0f / s.depth[i + k];
-                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
-                const float q0 = 1.0f - q1 - q2;
-                const __m128 a = _mm_set1_ps(q0), b = _mm_set1_ps(q1), c = _mm_set1_ps(q2);
+                const std::size_t at_x = static_cast<std::size_t>(x) + k;
+                const __m128 a = _mm_set1_ps(s.q0[at_x]), b = _mm_set1_ps(s.q1[at_x]),
+                             c = _mm_set1_ps(s.q2[at_x]);
                 const std::size_t at = run_length + k;
                 store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_p[0]), _mm_mul_ps(b, corner_p[1])),
                                  _mm_mul_ps(c, corner_p[2])),
@@ -983,11 +989,9 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // Small triangles: the scalar formulas, pixel by pixel (a SIMD
             // call would mostly pad); the same roundings as the kernel.
             for (std::size_t k = 0; k < count; ++k) {
-                const float w = 1.0f / s.depth[i + k];
-                const float q1 = s.weight1[i + k] * w, q2 = s.weight2[i + k] * w;
-                const float q0 = 1.0f - q1 - q2;
+                const std::size_t at_x = static_cast<std::size_t>(x) + k;
                 glm::vec3 p, n;
-                interpolate_surface(object, *tri, q0, q1, q2, p, n);
+                interpolate_surface(object, *tri, s.q0[at_x], s.q1[at_x], s.q2[at_x], p, n);
                 const std::size_t at = run_length + k;
                 s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
                 s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
@@ -1008,7 +1012,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             const float* face = object.shading == Shading::Faceted
                                     ? &object.face_normals[tri->source].x
                                     : nullptr;
-            kernels.interpolate(&s.depth[i], &s.weight1[i], &s.weight2[i], count, corner, face,
+            kernels.interpolate(&s.q0[x], &s.q1[x], &s.q2[x], count, corner, face,
                                 {s.px.data() + run_length, s.py.data() + run_length,
                                  s.pz.data() + run_length, s.nx.data() + run_length,
                                  s.ny.data() + run_length, s.nz.data() + run_length});

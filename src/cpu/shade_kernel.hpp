@@ -61,14 +61,18 @@ struct SmallTriangle {
 struct Kernels {
     const char* name;
     // docs/spec.md §3 Phong shading's varyings along a span of pixels of one
-    // triangle: from the visibility buffer's 1/w and weights b1/w1, b2/w2,
-    // the perspective-correct q1 = b1/w1 · w, q2 likewise, q0 = 1 − q1 − q2,
-    // and p, N = q0·c0 + q1·c1 + q2·c2 from the corners (corner[k] = p, N).
+    // triangle: p, N = q0·c0 + q1·c1 + q2·c2 from the corners (corner[k] =
+    // p, N) and the pixels' perspective-correct weights (perspective_weights).
     // With `face_normal` (faceted shading), N is that normal. The same
     // roundings as the scalar formulas in render.cpp: no fused multiply-add.
-    void (*interpolate)(const float* inverse_w, const float* weight1, const float* weight2,
-                        std::size_t count, const float (*corner)[6], const float* face_normal,
-                        const SurfaceOut& out);
+    void (*interpolate)(const float* q0, const float* q1, const float* q2, std::size_t count,
+                        const float (*corner)[6], const float* face_normal, const SurfaceOut& out);
+    // The perspective-correct weights of a row of pixels, from the
+    // visibility buffer's 1/w and b1/w1, b2/w2: w = 1 / (1/w), q1 = b1/w1 · w,
+    // q2 = b2/w2 · w, q0 = (1 − q1) − q2 (docs/spec.md §3; where nothing was
+    // drawn, 1/w is 0 and the weights are not numbers, unused).
+    void (*perspective_weights)(const float* inverse_w, const float* weight1, const float* weight2,
+                                std::size_t count, float* q0, float* q1, float* q2);
     // docs/spec.md §3 Phong shading: renormalise the normal, light per pixel.
     void (*shade_phong)(Reflection reflection, std::span<const equations::PreparedLight> lights,
                         const Material& material, const float eye[3], const SurfaceRun& surface,

@@ -100,27 +100,47 @@ struct Impl {
 #endif
     }
 
-    static void interpolate(const float* inverse_w, const float* weight1, const float* weight2,
-                            std::size_t count, const float (*corner)[6], const float* face_normal,
+    static void perspective_weights(const float* inverse_w, const float* weight1,
+                                    const float* weight2, std::size_t count, float* q0, float* q1,
+                                    float* q2) {
+        auto block = [&](std::size_t i) {
+            const Batch w = Batch(1.0f) / Batch::load_unaligned(inverse_w + i);
+            const Batch b = Batch::load_unaligned(weight1 + i) * w;
+            const Batch c = Batch::load_unaligned(weight2 + i) * w;
+            (Batch(1.0f) - b - c).store_unaligned(q0 + i);
+            b.store_unaligned(q1 + i);
+            c.store_unaligned(q2 + i);
+        };
+        std::size_t i = 0;
+        for (; i + width <= count; i += width) block(i);
+        for (; i < count; ++i) {  // the last few one at a time, the same operations
+            const float w = 1.0f / inverse_w[i];
+            const float b = weight1[i] * w, c = weight2[i] * w;
+            q0[i] = 1.0f - b - c;
+            q1[i] = b;
+            q2[i] = c;
+        }
+    }
+
+    static void interpolate(const float* q0, const float* q1, const float* q2, std::size_t count,
+                            const float (*corner)[6], const float* face_normal,
                             const SurfaceOut& out) {
         float* outputs[6] = {out.px, out.py, out.pz, out.nx, out.ny, out.nz};
         const int mixed = face_normal ? 3 : 6;
-        auto span = [&](std::size_t i, const float* iw, const float* w1, const float* w2,
+        auto span = [&](std::size_t i, const float* a0, const float* a1, const float* a2,
                         float* const* dest) {
-            const Batch w = Batch(1.0f) / Batch::load_unaligned(iw);
-            const Batch q1 = rounded(Batch::load_unaligned(w1) * w);
-            const Batch q2 = rounded(Batch::load_unaligned(w2) * w);
-            const Batch q0 = Batch(1.0f) - q1 - q2;
+            const Batch w0 = Batch::load_unaligned(a0), w1 = Batch::load_unaligned(a1),
+                        w2 = Batch::load_unaligned(a2);
             for (int k = 0; k < mixed; ++k) {
-                const Batch a = rounded(q0 * Batch(corner[0][k]));
-                const Batch b = rounded(q1 * Batch(corner[1][k]));
-                const Batch c = rounded(q2 * Batch(corner[2][k]));
+                const Batch a = rounded(w0 * Batch(corner[0][k]));
+                const Batch b = rounded(w1 * Batch(corner[1][k]));
+                const Batch c = rounded(w2 * Batch(corner[2][k]));
                 (a + b + c).store_unaligned(dest[k] + i);
             }
             for (int k = mixed; k < 6; ++k) Batch(face_normal[k - 3]).store_unaligned(dest[k] + i);
         };
         std::size_t i = 0;
-        for (; i + width <= count; i += width) span(i, inverse_w + i, weight1 + i, weight2 + i, outputs);
+        for (; i + width <= count; i += width) span(i, q0 + i, q1 + i, q2 + i, outputs);
         if (i < count) {
             alignas(64) float in[3][width];
             alignas(64) float result[6][width];
@@ -128,9 +148,9 @@ struct Impl {
             for (std::size_t lane = 0; lane < width; ++lane) {
                 // Pad with the last pixel: valid numbers, results unused.
                 const std::size_t from = i + lane < count ? i + lane : count - 1;
-                in[0][lane] = inverse_w[from];
-                in[1][lane] = weight1[from];
-                in[2][lane] = weight2[from];
+                in[0][lane] = q0[from];
+                in[1][lane] = q1[from];
+                in[2][lane] = q2[from];
             }
             span(0, in[0], in[1], in[2], dest);
             for (int k = 0; k < 6; ++k)
