@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -233,4 +235,125 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
         EXPECT_GT(covered_ninth, 50) << "the ninth pixel of a row was covered too rarely to test it";
     }
     if (sets_with_kernel == 0) std::printf("no set on this CPU has visibility_small\n");
+}
+
+// The vertex stage (render.cpp's vertex_stage: glm's matrix product, then
+// to_window) against its rule written out here vertex by vertex, every
+// product rounded on its own: random matrices and points, points behind the
+// eye and outside each clip plane, w = 0, NaN and coordinates far beyond the
+// fixed-point range, and fixed-point values at, just below and just above
+// every half between −3 and 3 (the rounding half up), for every count up to
+// two vectors and a bit.
+namespace {
+
+struct ExpectedVertex {
+    float clip[4];
+    litkit::kernels::WindowCorner corner;
+};
+
+ExpectedVertex expected_vertex(const float m[16], const float p[3], float half_width,
+                               float half_height) {
+    using namespace litkit::kernels;
+    ExpectedVertex e;
+    for (int r = 0; r < 4; ++r) {
+        volatile float mul0 = m[r] * p[0], mul1 = m[4 + r] * p[1], mul2 = m[8 + r] * p[2],
+                       mul3 = m[12 + r] * 1.0f;
+        volatile float add0 = mul0 + mul1, add1 = mul2 + mul3;
+        e.clip[r] = add0 + add1;
+    }
+    const float x = e.clip[0], y = e.clip[1], z = e.clip[2], w = e.clip[3];
+    const float band_w = guard_band * w;
+    e.corner.outside = static_cast<std::uint8_t>(
+        (z + w < 0.0f ? 1 : 0) | (w - z < 0.0f ? 2 : 0) | (x + band_w < 0.0f ? 4 : 0) |
+        (band_w - x < 0.0f ? 8 : 0) | (y + band_w < 0.0f ? 16 : 0) | (band_w - y < 0.0f ? 32 : 0));
+    const float inverse_w = 1.0f / w;
+    volatile float px = x * inverse_w, py = y * inverse_w;
+    volatile float sx = px + 1.0f, sy = 1.0f - py;
+    const double fixed_x = static_cast<double>(sx * half_width) * static_cast<double>(subpixel_one);
+    const double fixed_y = static_cast<double>(sy * half_height) * static_cast<double>(subpixel_one);
+    if (!(std::abs(fixed_x) < largest_fixed_coordinate && std::abs(fixed_y) < largest_fixed_coordinate))
+        return e;
+    e.corner.x = static_cast<std::int32_t>(std::floor(fixed_x + 0.5));  // exact in double
+    e.corner.y = static_cast<std::int32_t>(std::floor(fixed_y + 0.5));
+    e.corner.inverse_w = inverse_w;
+    e.corner.valid = true;
+    return e;
+}
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST(Kernels, TransformVerticesFollowsTheVertexStageRuleInEveryLane) {
+    std::mt19937 random(61);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f), wide(-40.0f, 40.0f);
+    // Scenes' matrices: random perspective-like ones; and the identity, for
+    // which the fixed-point x is (x + 1) · half_width · 256 and can be aimed.
+    std::vector<std::array<float, 16>> matrices;
+    for (int n = 0; n < 6; ++n) {
+        std::array<float, 16> m{};
+        for (float& v : m) v = unit(random) * 2.0f;
+        m[11] = -1.0f, m[15] = 0.0f;  // w = −z_view, as a perspective matrix has it
+        matrices.push_back(m);
+    }
+    const std::array<float, 16> identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    matrices.push_back(identity);
+
+    std::vector<float> points;
+    auto add = [&](float x, float y, float z) { points.insert(points.end(), {x, y, z}); };
+    for (int n = 0; n < 300; ++n) add(wide(random), wide(random), wide(random));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (float v : {0.0f, 1e30f, -1e30f, 3e38f, nan}) add(v, v * 0.5f, v);
+    // Fixed-point targets at halves (with the identity and half_width 0.5:
+    // fixed x = (x + 1) · 128), and the floats either side of each.
+    for (int half = -6; half <= 6; ++half) {
+        const float x = static_cast<float>(half) * 0.5f / 128.0f - 1.0f;
+        for (float v : {std::nextafter(x, -2.0f), x, std::nextafter(x, 2.0f)}) add(v, -v, 0.5f);
+    }
+    const std::size_t vertices = points.size() / 3;
+
+    for (const Kernels* set : runnable_sets()) {
+        std::printf("checking the %s set\n", set->name);
+        int checked = 0, valid = 0, invalid = 0, halves = 0;
+        for (const auto& m : matrices) {
+            const bool aimed = &m == &matrices.back();
+            const float half_width = aimed ? 0.5f : 960.0f, half_height = aimed ? 0.5f : 540.0f;
+            for (std::size_t count : {std::size_t{1}, std::size_t{7}, std::size_t{16}, std::size_t{17},
+                                      std::size_t{33}, vertices}) {
+                for (std::size_t first = 0; first + count <= vertices; first += count) {
+                    std::vector<float> clip(4 * count + 4, -7.0f);  // one past: must stay
+                    std::vector<litkit::kernels::WindowCorner> window(count + 1);
+                    window[count].x = -7;
+                    set->transform_vertices(&points[3 * first], count, m.data(), half_width,
+                                            half_height, clip.data(), window.data());
+                    for (std::size_t i = 0; i < count; ++i) {
+                        const ExpectedVertex e =
+                            expected_vertex(m.data(), &points[3 * (first + i)], half_width, half_height);
+                        const auto& got = window[i];
+                        for (int r = 0; r < 4; ++r)
+                            ASSERT_TRUE(same_bits(clip[4 * i + static_cast<std::size_t>(r)], e.clip[r]))
+                                << set->name << ": vertex " << first + i << " clip " << r;
+                        ASSERT_EQ(got.valid, e.corner.valid) << set->name << ": vertex " << first + i;
+                        ASSERT_EQ(got.outside, e.corner.outside) << set->name << ": vertex " << first + i;
+                        ASSERT_EQ(got.x, e.corner.x) << set->name << ": vertex " << first + i;
+                        ASSERT_EQ(got.y, e.corner.y) << set->name << ": vertex " << first + i;
+                        ASSERT_TRUE(same_bits(got.inverse_w, e.corner.inverse_w))
+                            << set->name << ": vertex " << first + i;
+                        ++checked;
+                        (e.corner.valid ? valid : invalid) += 1;
+                        if (aimed && e.corner.valid) {
+                            const double fixed = (static_cast<double>(points[3 * (first + i)]) + 1.0) * 128.0;
+                            halves += std::abs(fixed - std::round(fixed)) == 0.5;
+                        }
+                    }
+                    ASSERT_EQ(clip[4 * count], -7.0f) << "wrote past the last vertex";
+                    ASSERT_EQ(window[count].x, -7) << "wrote past the last vertex";
+                }
+            }
+        }
+        EXPECT_GT(valid, 1000);
+        EXPECT_GT(invalid, 20);  // NaN, far beyond the range, w = 0
+        EXPECT_GT(halves, 20);   // exact halves were met
+        EXPECT_GT(checked, 10000);
+    }
 }

@@ -56,9 +56,9 @@ struct ClipVertex {
     std::array<float, max_varyings> varyings;
 };
 
-// Window coordinates are fixed point with this many bits below the pixel.
-constexpr int subpixel_bits = 8;
-constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
+using kernels::subpixel_bits;
+using kernels::subpixel_one;
+using kernels::WindowCorner;
 
 // An object's geometry in world space, built once per Renderer ("uploaded").
 struct PreparedObject {
@@ -72,10 +72,7 @@ struct PreparedObject {
     Shading shading = Shading::Phong;
 };
 
-// Guard band: triangles are clipped at |x|, |y| ≤ guard_band · w, well outside
-// the viewport, so fixed-point coordinates stay small while no pixel inside
-// the viewport changes.
-constexpr float guard_band = 2.0f;
+using kernels::guard_band;
 
 // Signed distances of a clip-space point to the six clip planes; ≥ 0 inside.
 std::array<float, 6> plane_distances(const glm::vec4& c) {
@@ -138,10 +135,7 @@ constexpr std::int64_t narrow_triangle = 8;
 // other, both ways (8 pixels), step their edge functions in 32-bit SIMD lanes.
 constexpr std::int32_t small_triangle = 8 * static_cast<std::int32_t>(subpixel_one);
 
-// Window coordinates in fixed point stay below this (the guard band keeps
-// them within 3 image sizes of 16384 pixels, far less), so that edge
-// functions never overflow.
-constexpr double largest_fixed_coordinate = 0x1p30;
+using kernels::largest_fixed_coordinate;
 
 // Nearest integer, halves up; |v| stays far below 2^31 thanks to the guard
 // band. (std::llround is a library call; this is two instructions.)
@@ -153,17 +147,6 @@ std::int32_t round_to_int(double v) {
 
 // Varyings of the corners of a piece of a clipped triangle.
 using CornerVaryings = std::array<std::array<float, max_varyings>, 3>;
-
-// A corner in window coordinates: fixed-point x, y and 1/w, and the clip
-// planes it lies outside of (bit k: plane_distances(c)[k] < 0). Unclipped
-// triangles take their corners from the vertex stage, which makes one per
-// mesh vertex; clipped pieces make theirs in setup, with the same function.
-struct WindowCorner {
-    std::int32_t x = 0, y = 0;
-    float inverse_w = 0.0f;
-    std::uint8_t outside = 0;  // clip planes, one bit each
-    bool valid = false;        // false: beyond the fixed-point range (degenerate input)
-};
 
 // What the fragment stage needs of a triangle: where its varyings come from
 // (the mesh's vertices, or a clipped polygon's own).
@@ -452,11 +435,15 @@ void Renderer::Impl::vertex_stage(int width, int height) {
         std::vector<glm::vec3>& colors = vertex_colors[o];
         if (object.shading == Shading::Gouraud) colors.resize(object.positions.size());
         pool.parallel_for((clip.size() + chunk - 1) / chunk, [&](std::size_t c, int) {
-            const std::size_t end = std::min(clip.size(), (c + 1) * chunk);
-            for (std::size_t i = c * chunk; i < end; ++i) {
-                clip[i] = view_projection * glm::vec4(object.positions[i], 1.0f);
-                window[i] = to_window(clip[i], half_width, half_height);
-                if (object.shading == Shading::Gouraud)
+            const std::size_t begin = c * chunk;
+            const std::size_t end = std::min(clip.size(), begin + chunk);
+            // clip = view_projection · (p, 1) and to_window(clip), a vector
+            // of vertices at a time.
+            kernels.transform_vertices(&object.positions[begin].x, end - begin,
+                                       &view_projection[0][0], half_width, half_height,
+                                       &clip[begin].x, &window[begin]);
+            if (object.shading == Shading::Gouraud) {
+                for (std::size_t i = begin; i < end; ++i)
                     colors[i] = light_with(object.reflection, lights, object.material,
                                            object.positions[i], object.normals[i], eye);
             }

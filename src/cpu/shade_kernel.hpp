@@ -13,6 +13,32 @@
 
 namespace litkit::kernels {
 
+// Window coordinates are fixed point with this many bits below the pixel.
+constexpr int subpixel_bits = 8;
+constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
+
+// Guard band: triangles are clipped at |x|, |y| ≤ guard_band · w, well outside
+// the viewport, so fixed-point coordinates stay small while no pixel inside
+// the viewport changes.
+constexpr float guard_band = 2.0f;
+
+// Window coordinates in fixed point stay below this (the guard band keeps
+// them within 3 image sizes of 16384 pixels, far less), so that edge
+// functions never overflow.
+constexpr double largest_fixed_coordinate = 0x1p30;
+
+// A corner in window coordinates: fixed-point x, y and 1/w, and the clip
+// planes it lies outside of (bit k: plane_distances(c)[k] < 0). Unclipped
+// triangles take their corners from the vertex stage, which makes one per
+// mesh vertex; clipped pieces make theirs in setup (render.cpp's
+// to_window, which the kernels' transform_vertices follows exactly).
+struct WindowCorner {
+    std::int32_t x = 0, y = 0;
+    float inverse_w = 0.0f;
+    std::uint8_t outside = 0;  // clip planes, one bit each
+    bool valid = false;        // false: beyond the fixed-point range (degenerate input)
+};
+
 // A run of pixels in structure-of-arrays form: the interpolated world
 // position and (not yet renormalised) normal of each.
 struct SurfaceRun {
@@ -67,6 +93,17 @@ struct Kernels {
     // roundings as the scalar formulas in render.cpp: no fused multiply-add.
     void (*interpolate)(const float* q0, const float* q1, const float* q2, std::size_t count,
                         const float (*corner)[6], const float* face_normal, const SurfaceOut& out);
+    // The vertex stage of `count` mesh vertices (positions x, y, z one after
+    // another): clip = M · (p, 1) as glm multiplies, (M0·x + M1·y) +
+    // (M2·z + M3) with M's columns (written x, y, z, w per vertex), and the
+    // window corner render.cpp's to_window makes of it: the clip planes
+    // outside, 1/w, and x, y in fixed point, (x/w + 1)·half_width and
+    // (1 − y/w)·half_height times subpixel_one rounded half up, valid where
+    // both are below largest_fixed_coordinate in magnitude (otherwise x, y
+    // and 1/w are 0). `matrix` is column-major (glm's).
+    void (*transform_vertices)(const float* positions, std::size_t count, const float matrix[16],
+                               float half_width, float half_height, float* clip,
+                               WindowCorner* window);
     // The perspective-correct weights of a row of pixels, from the
     // visibility buffer's 1/w and b1/w1, b2/w2: w = 1 / (1/w), q1 = b1/w1 · w,
     // q2 = b2/w2 · w, q0 = (1 − q1) − q2 (docs/spec.md §3; where nothing was

@@ -115,7 +115,7 @@ void visibility_small(const SmallTriangle& t, float* depth, const void** visible
 
 }  // namespace
 
-const Kernels avx2_kernels{"avx2", &Avx2Impl::interpolate, &Avx2Impl::perspective_weights, &Avx2Impl::shade_phong, &Avx2Impl::encode,
+const Kernels avx2_kernels{"avx2", &Avx2Impl::interpolate, &Avx2Impl::transform_vertices, &Avx2Impl::perspective_weights, &Avx2Impl::shade_phong, &Avx2Impl::encode,
                            &visibility_row, &visibility_small};
 
 }  // namespace litkit::kernels

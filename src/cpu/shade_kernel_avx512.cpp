@@ -96,7 +96,7 @@ void visibility_small(const SmallTriangle& t, float* depth, const void** visible
 
 }  // namespace
 
-const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::perspective_weights, &Avx512Impl::shade_phong,
+const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::transform_vertices, &Avx512Impl::perspective_weights, &Avx512Impl::shade_phong,
                              &Avx512Impl::encode, &visibility_row, &visibility_small};
 
 }  // namespace litkit::kernels

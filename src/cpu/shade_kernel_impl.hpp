@@ -100,6 +100,78 @@ struct Impl {
 #endif
     }
 
+    static void transform_vertices(const float* positions, std::size_t count, const float m[16],
+                                   float half_width, float half_height, float* clip,
+                                   WindowCorner* window) {
+        for (std::size_t i = 0; i < count; i += width) {
+            const std::size_t lanes = count - i < width ? count - i : width;
+            alignas(64) float in[3][width];
+            for (std::size_t j = 0; j < width; ++j) {
+                // Lanes past the end repeat the last vertex; they are not kept.
+                const std::size_t from = i + (j < lanes ? j : lanes - 1);
+                for (int k = 0; k < 3; ++k) in[k][j] = positions[3 * from + static_cast<std::size_t>(k)];
+            }
+            const Batch x = Batch::load_aligned(in[0]);
+            const Batch y = Batch::load_aligned(in[1]);
+            const Batch z = Batch::load_aligned(in[2]);
+            alignas(64) float c[4][width];
+            for (int r = 0; r < 4; ++r) {
+                // glm's order; M3's product with w = 1 is M3 itself.
+                const Batch add0 = rounded(Batch(m[r]) * x) + rounded(Batch(m[4 + r]) * y);
+                const Batch add1 = rounded(Batch(m[8 + r]) * z) + Batch(m[12 + r]);
+                (add0 + add1).store_aligned(c[r]);
+            }
+            const Batch cx = Batch::load_aligned(c[0]), cy = Batch::load_aligned(c[1]),
+                        cz = Batch::load_aligned(c[2]), cw = Batch::load_aligned(c[3]);
+            const Batch band_w = rounded(Batch(guard_band) * cw);
+            const Batch zero(0.0f);
+            auto bit = [&](const xsimd::batch_bool<float, Arch>& out, float value) {
+                return xsimd::select(out, Batch(value), zero);
+            };
+            // The plane bits as small whole numbers, exact in a float.
+            const Batch outside = bit(cz + cw < zero, 1.0f) + bit(cw - cz < zero, 2.0f) +
+                                  bit(cx + band_w < zero, 4.0f) + bit(band_w - cx < zero, 8.0f) +
+                                  bit(cy + band_w < zero, 16.0f) + bit(band_w - cy < zero, 32.0f);
+            const Batch inverse_w = Batch(1.0f) / cw;
+            const Batch window_x = rounded(rounded(cx * inverse_w) + Batch(1.0f)) * Batch(half_width);
+            const Batch window_y = rounded(Batch(1.0f) - rounded(cy * inverse_w)) * Batch(half_height);
+            // Times subpixel_one (a power of two: exact, as in double, unless
+            // it overflows to infinity, which the range test refuses too).
+            const Batch fixed_x = window_x * Batch(static_cast<float>(subpixel_one));
+            const Batch fixed_y = window_y * Batch(static_cast<float>(subpixel_one));
+            const Batch limit(static_cast<float>(largest_fixed_coordinate));
+            const auto valid = (xsimd::abs(fixed_x) < limit) & (xsimd::abs(fixed_y) < limit);
+            // Half up, as to_window's double arithmetic rounds v (exact, and
+            // below 2^30): floor(v) + (v − floor(v) ≥ 0.5). The difference is
+            // exact for v ≥ 0 and v ≤ −1 (Sterbenz) and for −1 < v ≤ −0.5
+            // (below 0.5, on v's grid); for −0.5 < v < 0 it is above 0.5, and
+            // rounding cannot take it below.
+            // (Adding the 1 in float is exact: it happens only below 2^23.)
+            auto half_up = [&](const Batch& v) {
+                const Batch down = xsimd::floor(xsimd::select(valid, v, zero));
+                return xsimd::batch_cast<std::int32_t>(down + bit(v - down >= Batch(0.5f), 1.0f));
+            };
+            alignas(64) std::int32_t fx[width], fy[width], bits[width];
+            alignas(64) float iw[width];
+            half_up(fixed_x).store_aligned(fx);
+            half_up(fixed_y).store_aligned(fy);
+            xsimd::batch_cast<std::int32_t>(outside).store_aligned(bits);
+            xsimd::select(valid, inverse_w, zero).store_aligned(iw);
+            alignas(64) float ok[width];
+            xsimd::select(valid, Batch(1.0f), zero).store_aligned(ok);
+            for (std::size_t j = 0; j < lanes; ++j) {
+                float* out = clip + 4 * (i + j);
+                out[0] = c[0][j], out[1] = c[1][j], out[2] = c[2][j], out[3] = c[3][j];
+                WindowCorner& corner = window[i + j];
+                corner.outside = static_cast<std::uint8_t>(bits[j]);
+                corner.valid = ok[j] != 0.0f;
+                corner.x = corner.valid ? fx[j] : 0;
+                corner.y = corner.valid ? fy[j] : 0;
+                corner.inverse_w = iw[j];
+            }
+        }
+    }
+
     static void perspective_weights(const float* inverse_w, const float* weight1,
                                     const float* weight2, std::size_t count, float* q0, float* q1,
                                     float* q2) {

@@ -27,7 +27,7 @@ void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], 
     }
 }
 
-const Kernels portable_kernels{"portable", &PortableImpl::interpolate, &PortableImpl::perspective_weights, &PortableImpl::shade_phong,
+const Kernels portable_kernels{"portable", &PortableImpl::interpolate, &PortableImpl::transform_vertices, &PortableImpl::perspective_weights, &PortableImpl::shade_phong,
                                &PortableImpl::encode, &visibility_row_scalar, nullptr};
 
 }  // namespace litkit::kernels
