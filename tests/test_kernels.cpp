@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cpu/shade_kernel.hpp"
+#include "cpu/shade_kernel_impl.hpp"  // equations::pow of batches
 
 namespace {
 
@@ -355,5 +356,53 @@ TEST(Kernels, TransformVerticesFollowsTheVertexStageRuleInEveryLane) {
         EXPECT_GT(invalid, 20);  // NaN, far beyond the range, w = 0
         EXPECT_GT(halves, 20);   // exact halves were met
         EXPECT_GT(checked, 10000);
+    }
+}
+
+// pow of batches (equations.hpp), which every kernel set's lighting uses:
+// whole exponents n of 0–64 alike in every lane by repeated squaring, within
+// n · 2^-24 of the power computed in double; anything else exactly xsimd::pow's
+// result. Checked at the portable width (the same text as the others').
+TEST(Kernels, PowOfBatchesIsThePowerForWholeExponentsAndXsimdsOtherwise) {
+    using Batch = xsimd::batch<float, xsimd::default_arch>;
+    constexpr std::size_t lanes = Batch::size;
+    std::mt19937 random(64);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<float> bases{0.0f, 1.0f, 0.5f, 0.999999f, 1e-3f, 2.0f, 1.0001f};
+    for (int i = 0; i < 200; ++i) bases.push_back(unit(random));
+    while (bases.size() % lanes) bases.push_back(unit(random));
+    int checked = 0;
+    for (int n = 0; n <= 64; ++n) {
+        for (std::size_t i = 0; i < bases.size(); i += lanes) {
+            alignas(64) float got[lanes];
+            litkit::equations::pow(Batch::load_unaligned(&bases[i]), Batch(static_cast<float>(n)))
+                .store_aligned(got);
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const float b = bases[i + j];
+                if (b == 0.0f) {
+                    EXPECT_EQ(got[j], n == 0 ? 1.0f : 0.0f) << "0^" << n;  // 0^0 = 1, docs/spec.md
+                    continue;
+                }
+                const double exact = std::pow(static_cast<double>(b), n);
+                if (exact < 1e-30) continue;  // underflowing: relative error means nothing
+                EXPECT_LE(std::abs(got[j] - exact), std::max(n, 1) * std::ldexp(exact, -24))
+                    << b << "^" << n << " = " << got[j] << ", exactly " << exact;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 10000);
+    // Not a whole number from 0 to 64 in every lane: xsimd::pow, bit for bit.
+    alignas(64) float mixed[lanes];
+    for (std::size_t j = 0; j < lanes; ++j) mixed[j] = j % 2 ? 32.0f : 31.0f;
+    for (const Batch exponent : {Batch(2.5f), Batch(65.0f), Batch(-2.0f), Batch::load_aligned(mixed)}) {
+        for (std::size_t i = 0; i < bases.size(); i += lanes) {
+            const Batch base = Batch::load_unaligned(&bases[i]);
+            alignas(64) float got[lanes], expected[lanes];
+            litkit::equations::pow(base, exponent).store_aligned(got);
+            xsimd::select(base == Batch(0.0f), Batch(0.0f), xsimd::pow(base, exponent)).store_aligned(expected);
+            for (std::size_t j = 0; j < lanes; ++j)
+                ASSERT_TRUE(same_bits(got[j], expected[j])) << bases[i + j] << " lane " << j;
+        }
     }
 }

@@ -42,12 +42,15 @@ using std::pow;
 using std::sqrt;
 //@}
 
-/// pow of SIMD batches of floats (the CPU kernels' T): exactly xsimd::pow's
-/// result, but where no lane's base is negative (as max(base, 0) makes it
-/// for every use but toon's) without the work xsimd::pow does for negative
-/// bases. Declared here so that the templates below find it before xsimd's
-/// own pow; defined in src/cpu/shade_kernel_impl.hpp, where the kernels
-/// are compiled.
+/// pow of SIMD batches of floats (the CPU kernels' T): for a whole exponent
+/// from 0 to 64 in every lane (shininess 32, a spot's exponent 2), the
+/// power by repeated squaring (within n · 2^-24, relative); otherwise exactly
+/// xsimd::pow's result, but where no lane's base is negative (as max(base,
+/// 0) makes it for every use but toon's) without the work xsimd::pow does
+/// for negative bases. A zero base gives 0, but 0^0 = 1 (docs/spec.md).
+/// Declared here so that the
+/// templates below find it before xsimd's own pow; defined in
+/// src/cpu/shade_kernel_impl.hpp, where the kernels are compiled.
 template <class Arch>
 xsimd::batch<float, Arch> pow(const xsimd::batch<float, Arch>& base, const xsimd::batch<float, Arch>& exponent);
 
