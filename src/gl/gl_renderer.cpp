@@ -300,17 +300,13 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
     for (auto& buffer : buffers) buffer.resize(target.band_bytes());
     std::atomic<int> read{-1};       // the last band read into its buffer
     std::atomic<int> converted{-1};  // the last band converted
-    // A short spin (the other side is usually a band away), then a real
-    // wait: spinning on, a thread could hold the core the one it waits for
-    // needs, and the frame then took a scheduler tick per band (a whole run
-    // at 20 ms a frame instead of 3.6, now and then).
+    // Waiting on the atomic itself (C++20 wait/notify), never spinning:
+    // with 2 cores shared with llvmpipe's threads, a spinning thread could
+    // hold the core the one it waits for needs. Spinning only, a whole run
+    // now and then drew at 20 ms a frame instead of 3.6; spinning 4096
+    // pauses before the wait, 3 to 5 runs in 16 at 6-9 ms; waiting only,
+    // none in 28 (docs/performance.md, session 7).
     auto wait_until = [](const std::atomic<int>& counter, int at_least) {
-        for (int spin = 0; spin < 4096; ++spin) {
-            if (counter.load(std::memory_order_acquire) >= at_least) return;
-#if defined(__x86_64__) || defined(__i386__)
-            _mm_pause();
-#endif
-        }
         for (int seen; (seen = counter.load(std::memory_order_acquire)) < at_least;)
             counter.wait(seen, std::memory_order_acquire);
     };
