@@ -24,10 +24,11 @@ xsimd::batch<float, Arch> litkit::equations::pow(const xsimd::batch<float, Arch>
     // exp and log take about a hundred instructions. Within n · 2^-24 of
     // the exact power, relative (each product rounds once, and a square
     // doubles the error it squares), where exp(n · log base) is within a
-    // few ulp; both far inside a pixel level (2 · 10^-6 at n = 32). 0^0 is 1, as docs/spec.md has it for a spot's exponent 0
-    // (the general path below gives 0 there). (Plain
-    // arithmetic only: an inline library function compiled here could be
-    // the copy every caller gets, AVX-512 and all.)
+    // few ulp; both far inside a pixel level (2 · 10^-6 at n = 32). 0^0 is
+    // 1, as docs/spec.md has it for a spot's exponent 0 (the general path
+    // below gives 0 there). (Plain arithmetic only: an inline library
+    // function compiled here could be the copy every caller gets, AVX-512
+    // and all.)
     alignas(64) float lanes[Batch::size];
     exponent.store_aligned(lanes);
     const float n = lanes[0];
@@ -198,9 +199,10 @@ struct Impl {
                                     const float* weight2, std::size_t count, float* q0, float* q1,
                                     float* q2) {
         auto block = [&](std::size_t i) {
+            // rounded(): q0's subtractions must not fuse with the products.
             const Batch w = Batch(1.0f) / Batch::load_unaligned(inverse_w + i);
-            const Batch b = Batch::load_unaligned(weight1 + i) * w;
-            const Batch c = Batch::load_unaligned(weight2 + i) * w;
+            const Batch b = rounded(Batch::load_unaligned(weight1 + i) * w);
+            const Batch c = rounded(Batch::load_unaligned(weight2 + i) * w);
             (Batch(1.0f) - b - c).store_unaligned(q0 + i);
             b.store_unaligned(q1 + i);
             c.store_unaligned(q2 + i);
