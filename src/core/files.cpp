@@ -21,6 +21,27 @@ namespace {
 
 std::string errno_text(int error) { return std::strerror(error); }
 
+// Reserves the blocks for `size` bytes before they are written; an error
+// text when the file system refuses for want of room, else empty. Two
+// reasons (docs/design.md, "Output files"): a full disk fails here, before
+// a byte is written; and ext4, renaming over an existing file, first
+// allocates the new file's delayed-allocation blocks and starts writing
+// them out (its auto_da_alloc), which took 1.5 ms for a 60 KB PNG here,
+// against 0.05 ms with the blocks reserved first. File systems without
+// fallocate (or a size of 0) go on without it.
+std::string reserve_space(int fd, std::size_t size) {
+#if defined(__linux__)
+    if (size == 0) return {};
+    if (::fallocate(fd, 0, 0, static_cast<off_t>(size)) == 0) return {};
+    const int error = errno;
+    if (error == ENOSPC || error == EDQUOT || error == EFBIG) return errno_text(error);
+#else
+    (void)fd;
+    (void)size;
+#endif
+    return {};
+}
+
 // The registry of temporary paths (files.hpp). A slot is free (0), being
 // filled (1) or holds a path (2); the handler reads only slots in state 2.
 constexpr int registry_slots = 64;
@@ -175,6 +196,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
         if (::fchown(fd, status.st_uid, status.st_gid) != 0) { /* not root: the file is ours */ }
         if (::fchmod(fd, status.st_mode & 07777) != 0) failure = errno_text(errno);
     }
+    if (failure.empty()) failure = reserve_space(fd, bytes.size());
     if (failure.empty()) {
         try {
             write_all(fd, bytes, path.string());
@@ -242,6 +264,7 @@ void write_folder_atomically(const std::filesystem::path& directory,
             if (fd < 0) fail(directory / name, errno_text(errno));
             std::string failure;
             if (mode != 0666 && ::fchmod(fd, mode) != 0) failure = errno_text(errno);
+            if (failure.empty()) failure = reserve_space(fd, bytes.size());
             if (failure.empty()) {
                 try {
                     write_all(fd, bytes, (directory / name).string());
