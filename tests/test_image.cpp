@@ -13,9 +13,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "core/png.hpp"
 #include "litkit/image.hpp"
 
 namespace fs = std::filesystem;
@@ -111,6 +113,95 @@ TEST_F(ScratchDir, PngOfEverySizeAndLevelRoundTrips) {
     }
 }
 
+// Noise in rows [first, end) of a flat picture.
+litkit::Image noise_in_rows(int width, int height, int first, int end) {
+    litkit::Image image(width, height);
+    std::uint32_t state = 11;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint8_t* p = image.pixel(x, y);
+            p[0] = 25, p[1] = 28, p[2] = 36;
+            if (y >= first && y < end) {
+                state = state * 1664525u + 1013904223u;
+                p[0] = static_cast<std::uint8_t>(state >> 24);
+                p[1] = static_cast<std::uint8_t>(state >> 16);
+            }
+        }
+    return image;
+}
+
+// The second thread's rows start where the work above and below is about
+// equal, wherever the detail lies; small pictures are not split.
+TEST(PngSplit, FollowsTheDetailNotTheMiddleRow) {
+    const int width = 800, height = 600;
+    EXPECT_LT(litkit::png_split_row(noise_in_rows(width, height, 0, height / 4)), height / 4);
+    EXPECT_GT(litkit::png_split_row(noise_in_rows(width, height, height * 3 / 4, height)),
+              height * 3 / 4);
+    // Detail in the middle third: split inside it.
+    const int middle = litkit::png_split_row(noise_in_rows(width, height, height / 3, height * 2 / 3));
+    EXPECT_GT(middle, height / 3);
+    EXPECT_LT(middle, height * 2 / 3);
+    // No detail (one colour): rows weigh the same, so about half each.
+    const int flat = litkit::png_split_row(noise_in_rows(width, height, 0, 0));
+    EXPECT_GE(flat, height / 2 - height / 20);
+    EXPECT_LE(flat, height / 2 + height / 20);
+    // Every split leaves rows on both sides.
+    const int first_row_only = litkit::png_split_row(noise_in_rows(width, height, 0, 1));
+    EXPECT_GE(first_row_only, 1);
+    EXPECT_LT(first_row_only, height);
+    const int last_row_only = litkit::png_split_row(noise_in_rows(width, height, height - 1, height));
+    EXPECT_GE(last_row_only, 1);
+    EXPECT_LT(last_row_only, height);
+    // Under 512 KiB of filtered rows: one piece.
+    EXPECT_EQ(litkit::png_split_row(noise_in_rows(300, 200, 0, 50)), 200);
+    EXPECT_EQ(litkit::png_split_row(noise_in_rows(200000, 1, 0, 1)), 1);
+}
+
+// Whatever row the split falls on, the file holds the picture exactly.
+TEST_F(ScratchDir, PngRoundTripsWhereverTheSplitFalls) {
+    const int width = 800, height = 600;
+    for (const auto& [first, end] : {std::pair{0, 1}, std::pair{0, 150}, std::pair{200, 400},
+                                     std::pair{450, 600}, std::pair{599, 600}}) {
+        const litkit::Image original = noise_in_rows(width, height, first, end);
+        const int split = litkit::png_split_row(original);
+        ASSERT_LT(split, height) << "the picture must be large enough to be split";
+        litkit::write_png(original, dir / "s.png");
+        EXPECT_EQ(litkit::read_png(dir / "s.png").rgb, original.rgb)
+            << "noise in rows " << first << "-" << end << ", split at " << split;
+    }
+}
+
+// An encoder's bytes are encode_png's, picture after picture (split or
+// not), and several threads may share one encoder.
+TEST_F(ScratchDir, PngEncoderGivesEncodePngsBytes) {
+    const litkit::PngEncoder encoder;
+    const std::vector<litkit::Image> pictures = {
+        gradient(37, 21), mixed_picture(700, 400), noise_in_rows(800, 600, 0, 150),
+        noise_in_rows(800, 600, 599, 600), mixed_picture(1920, 1080)};
+    for (const litkit::Image& picture : pictures) {
+        EXPECT_EQ(encoder.encode(picture), litkit::encode_png(picture))
+            << picture.width << "x" << picture.height;
+        EXPECT_EQ(encoder.encode(picture, 6), litkit::encode_png(picture, 6));
+    }
+    std::vector<std::string> expected;
+    for (const litkit::Image& picture : pictures) expected.push_back(litkit::encode_png(picture));
+    std::vector<std::thread> threads;
+    std::vector<int> wrong(4, 0);
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&, t] {
+            for (int round = 0; round < 3; ++round)
+                for (std::size_t p = 0; p < pictures.size(); ++p)
+                    wrong[t] += encoder.encode(pictures[p]) != expected[p];
+        });
+    }
+    for (std::thread& thread : threads) thread.join();
+    EXPECT_EQ(wrong, std::vector<int>(4, 0));
+    encoder.write(pictures[1], dir / "e.png");
+    EXPECT_EQ(read(dir / "e.png"), expected[1]);
+    EXPECT_THROW(encoder.encode(litkit::Image()), litkit::ArgumentError);
+    EXPECT_THROW(encoder.encode(pictures[0], 10), litkit::ArgumentError);
+}
+
 // The file read without libpng: every chunk's CRC, the IHDR fields, and the
 // IDAT data as one zlib stream (zlib checks its Adler-32) holding exactly
 // the rows with PNG's "up" filter, across the place where the halves meet.
@@ -187,9 +278,11 @@ TEST_F(ScratchDir, FailedWriteOverADirectoryLeavesItAndNoTemporaryFile) {
     EXPECT_EQ(entries, 1) << "a temporary file was left behind";
 }
 
-TEST_F(ScratchDir, WriteFailingHalfwayLeavesThePreviousFileUntouched) {
+TEST_F(ScratchDir, AFileSizeLimitLeavesThePreviousFileUntouched) {
     litkit::write_file_atomically(dir / "keep.txt", "old");
-    // A file-size limit makes write() fail part-way (EFBIG), even for root.
+    // A file-size limit refuses the file's space (EFBIG), even for root:
+    // where the file system reserves space first (ext4: fallocate), before
+    // a byte is written, elsewhere when write() gets part-way.
     struct rlimit saved;
     ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
     struct rlimit tiny = saved;

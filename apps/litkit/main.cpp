@@ -82,11 +82,12 @@ bool is_standard_output(const std::filesystem::path& output) {
            named.st_dev == standard.st_dev && named.st_ino == standard.st_ino;
 }
 
-void write_png_output(const litkit::Image& image, const std::filesystem::path& output) {
+void write_png_output(const litkit::PngEncoder& encoder, const litkit::Image& image,
+                      const std::filesystem::path& output) {
     if (is_standard_output(output)) {
-        litkit::write_all(STDOUT_FILENO, litkit::encode_png(image), "standard output");
+        litkit::write_all(STDOUT_FILENO, encoder.encode(image), "standard output");
     } else {
-        litkit::write_png(image, output);
+        encoder.write(image, output);
     }
 }
 
@@ -341,6 +342,8 @@ litkit::Scene load(const SceneArguments& arguments) {
 }
 
 int run_render(const RenderArguments& arguments) {
+    // First, while this is the process's only thread (litkit::PngEncoder).
+    const litkit::PngEncoder encoder;
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
 
@@ -358,7 +361,7 @@ int run_render(const RenderArguments& arguments) {
     Backend renderer(scene, arguments.scene);
     litkit::Image image;
     renderer.render_into(image);
-    write_png_output(image, output);
+    write_png_output(encoder, image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     (is_standard_output(output) ? std::cerr : std::cout) << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
@@ -483,6 +486,7 @@ int run_compare(const CompareArguments& arguments) {
     SceneArguments scene_arguments = arguments.scene;
     scene_arguments.width.reset();
     scene_arguments.height.reset();
+    const litkit::PngEncoder encoder;  // while this is the only thread
     litkit::Scene scene = load(scene_arguments);
     if (arguments.vary != "both") settle_missing_lighting(scene, arguments.yes);
     const std::vector<std::string>& files = arguments.scene.scenes;
@@ -500,7 +504,7 @@ int run_compare(const CompareArguments& arguments) {
     options.threads = arguments.scene.threads.value_or(0);
     const auto start = std::chrono::steady_clock::now();
     const litkit::CompareGrid grid = litkit::compare_models(scene, options);
-    litkit::write_png(grid.image, output);
+    encoder.write(grid.image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!grid.overridden_objects.empty()) {
@@ -614,6 +618,7 @@ void show_progress(int done, int total, double seconds) {
 }
 
 int run_turntable(const TurntableArguments& arguments) {
+    const litkit::PngEncoder encoder;  // for frames into a folder
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
     const std::vector<std::string>& files = arguments.scene.scenes;
@@ -644,7 +649,7 @@ int run_turntable(const TurntableArguments& arguments) {
             number.insert(0, static_cast<std::size_t>(digits) - number.size(), '0');
             const fs::path frame = output / ("frame-" + number + ".png");
             refuse_to_overwrite_inputs(scene, files, frame);
-            litkit::write_png(image, frame);
+            encoder.write(image, frame);
             written.push_back(frame);
         } else {
             frames.push_back(std::move(image));
