@@ -36,9 +36,19 @@ namespace {
 constexpr std::size_t split_from_bytes = std::size_t{512} << 10;
 // zlib's run-length pass takes about 1 + this many times as long over a
 // filtered byte that is not 0 (a literal, or a short run) as over a 0 in a
-// long run: 10-15 ns against 1.9 ns a byte here (docs/performance.md,
+// long run: 9-14 ns against 0.5 ns a byte here (docs/performance.md,
 // "Session 8"). What png_split_row weighs rows by.
-constexpr std::uint64_t literal_weight = 6;
+constexpr std::uint64_t literal_weight = 20;
+// Each piece is deflated as a run of streams of at most this many filtered
+// bytes, each ended on a byte boundary (a sync flush) and the next begun
+// afresh (deflateReset). zlib slides its window once a stream has taken
+// 65,274 bytes, and every 32 KiB after: it moves the window and rewrites its
+// two 64 KiB hash tables, which its run-length strategy never reads. That
+// was a third of the time (docs/performance.md, "Session 8": the default
+// scene 5.7 -> 3.6 ms, 1920×1080 20.5 -> 11.9 ms, the files as small).
+// Only runs within a stream are found, so a restart costs at most a run cut
+// in two, and an empty stored block (5 bytes).
+constexpr std::size_t stream_bytes = 64000;
 // IDAT chunks of at most this many bytes (a chunk may hold 2^31 − 1).
 constexpr std::size_t idat_chunk_bytes = std::size_t{1} << 20;
 
@@ -58,8 +68,9 @@ void grow(Piece& piece, std::size_t capacity) {
     piece.capacity = capacity;
 }
 
-// Rows [first, end): filtered, deflated raw; the last piece ends with the
-// final block, the others byte-aligned after a sync flush.
+// Rows [first, end): filtered, deflated raw in streams of whole rows
+// (stream_bytes); the last piece ends with the final block, the others
+// byte-aligned after a sync flush.
 void deflate_rows(const Image& image, int first, int end, bool last, int level, Piece& piece) {
     const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
     z_stream stream{};
@@ -73,6 +84,7 @@ void deflate_rows(const Image& image, int first, int end, bool last, int level, 
     grow(piece, (row_bytes + 1) * static_cast<std::size_t>(end - first) / 4 + 1024);
     std::vector<unsigned char> filtered(row_bytes + 1);
     filtered[0] = 2;  // "up": each byte minus the one above it (0 above the first row)
+    std::size_t stream_taken = 0;  // filtered bytes since the stream began
     for (int y = first; y < end; ++y) {
         const std::uint8_t* row = image.pixel(0, y);
         if (y == 0) {
@@ -86,7 +98,12 @@ void deflate_rows(const Image& image, int first, int end, bool last, int level, 
         piece.length += static_cast<uLong>(filtered.size());
         stream.next_in = filtered.data();
         stream.avail_in = static_cast<uInt>(filtered.size());
-        const int flush = y + 1 < end ? Z_NO_FLUSH : (last ? Z_FINISH : Z_SYNC_FLUSH);
+        stream_taken += filtered.size();
+        // The row that leaves no room for another ends its stream.
+        const bool stream_ends = stream_taken + filtered.size() > stream_bytes;
+        const int flush = y + 1 == end ? (last ? Z_FINISH : Z_SYNC_FLUSH)
+                          : stream_ends ? Z_SYNC_FLUSH
+                                        : Z_NO_FLUSH;
         for (;;) {
             if (piece.capacity - piece.size < 64) grow(piece, piece.capacity * 2);
             stream.next_out = piece.bytes.get() + piece.size;
@@ -100,6 +117,10 @@ void deflate_rows(const Image& image, int first, int end, bool last, int level, 
             if (flush == Z_FINISH ? status == Z_STREAM_END
                                   : stream.avail_in == 0 && stream.avail_out > 0)
                 break;
+        }
+        if (stream_ends && y + 1 < end) {
+            if (deflateReset(&stream) != Z_OK) throw Error("PNG encoding failed: zlib stream error");
+            stream_taken = 0;
         }
     }
 }
