@@ -7,16 +7,22 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "geometry/corner_angle.hpp"  // internal (src/)
+#include "core/parallel.hpp"                // internal (src/)
+#include "cpu/thread_pool.hpp"              // internal
+#include "geometry/corner_angle.hpp"       // internal
+#include "geometry/creased_normals.hpp"    // internal
+#include "scene/world_mesh.hpp"            // internal
 #include "litkit/error.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/render.hpp"
@@ -501,3 +507,84 @@ TEST(Crease, SixtyDegreeCubeUnderPhongShadingIsTheFacetedCube) {
 }
 
 }  // namespace
+
+// The renderer lends its threads to mesh building (src/scene/world_mesh.hpp):
+// the welding beside the triangles' weights, the normalising and the move
+// to world space in pieces. Whatever runs the pieces, in whatever order,
+// the mesh must be the very one, bit for bit.
+namespace {
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+// A mesh with everything welding and weighting must skip: a zero-area
+// triangle, one whose corners weld (closer than the weld distance), a
+// position no triangle uses, exact duplicates, a NaN position.
+Mesh awkward_mesh() {
+    Mesh mesh = litkit::make_sphere(1.0f, 24, 12);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.push_back({2.0f, 0.0f, 0.0f});
+    mesh.positions.push_back({2.0f, 1.0f, 0.0f});
+    mesh.positions.push_back({2.0f, 2.0f, 0.0f});            // collinear: zero area
+    mesh.positions.push_back({2.0f, 0.0f, 1e-9f});           // welds with base
+    mesh.positions.push_back({5.0f, 5.0f, 5.0f});            // unused
+    mesh.positions.push_back({2.0f, 1.0f, 0.0f});            // duplicate of base + 1
+    mesh.positions.push_back({std::nanf(""), 0.0f, 0.0f});   // not finite
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.triangles.push_back({base, base + 3, base + 1});
+    mesh.triangles.push_back({base + 5, base, base + 6});
+    mesh.triangles.push_back({base + 5, mesh.triangles[0][0], base + 3});
+    return mesh;
+}
+
+}  // namespace
+
+TEST(ParallelMeshBuilding, ThreadsGiveTheSameNormalsBitForBit) {
+    litkit::ThreadPool pool(2);
+    const litkit::ParallelFor threads = [&](std::size_t count, const litkit::ParallelJob& job) {
+        pool.parallel_for(count, [&](std::size_t index, int) { job(index); });
+    };
+    const litkit::ParallelFor backwards = [](std::size_t count, const litkit::ParallelJob& job) {
+        for (std::size_t index = count; index-- > 0;) job(index);
+    };
+    const std::vector<Mesh> meshes = {awkward_mesh(), litkit::make_sphere(1.5f, 512, 256),
+                                      litkit::make_teapot(1.0f, 6), litkit::make_cube(2.0f)};
+    for (const Mesh& mesh : meshes) {
+        for (const Normals weighting : weightings) {
+            const std::vector<glm::vec3> alone = vertex_normals(mesh, weighting);
+            EXPECT_TRUE(same_bits(vertex_normals(mesh, weighting, threads), alone))
+                << litkit::to_string(weighting) << ", " << mesh.triangles.size() << " triangles";
+            EXPECT_TRUE(same_bits(vertex_normals(mesh, weighting, backwards), alone))
+                << litkit::to_string(weighting) << ", " << mesh.triangles.size() << " triangles";
+        }
+    }
+    // The checks come first, with or without threads.
+    Mesh bad = litkit::make_cube(1.0f);
+    bad.triangles.push_back({0, 1, 99});
+    EXPECT_THROW(vertex_normals(bad, Normals::Mean, threads), litkit::ArgumentError);
+    EXPECT_THROW(vertex_normals(bad, Normals::File, threads), std::invalid_argument);
+}
+
+TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
+    litkit::ThreadPool pool(2);
+    const litkit::ParallelFor threads = [&](std::size_t count, const litkit::ParallelJob& job) {
+        pool.parallel_for(count, [&](std::size_t index, int) { job(index); });
+    };
+    const std::vector<litkit::SceneObject> objects = {
+        object_of(litkit::SphereShape{1.5f, 512, 256}), object_of(litkit::TorusShape{1.0f, 0.3f, 96, 48}),
+        object_of(litkit::TeapotShape{1.0f, 6}), object_of(litkit::CubeShape{2.0f})};
+    for (const litkit::SceneObject& object : objects) {
+        for (const Normals weighting : weightings) {
+            for (const std::optional<float> crease : {std::optional<float>{}, std::optional<float>{60.0f}}) {
+                const litkit::NormalOptions options{weighting, crease};
+                const litkit::WorldMesh alone = litkit::world_mesh(object, options);
+                const litkit::WorldMesh lent = litkit::world_mesh(object, options, threads);
+                EXPECT_TRUE(same_bits(lent.positions, alone.positions));
+                EXPECT_TRUE(same_bits(lent.normals, alone.normals)) << litkit::to_string(weighting);
+                EXPECT_EQ(lent.triangles, alone.triangles);
+            }
+        }
+    }
+}

@@ -36,6 +36,7 @@
 #include "cpu/shade_kernel.hpp"
 #include "cpu/thread_pool.hpp"
 #include "scene/float_range.hpp"
+#include "scene/world_mesh.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -380,8 +381,12 @@ void Renderer::Impl::prepare() {
     ++mesh_builds;
     objects.clear();
     chunks.clear();
+    // Mesh building borrows the pool's threads (the same meshes, bit for bit).
+    const ParallelFor parallel = [this](std::size_t count, const ParallelJob& job) {
+        pool.parallel_for(count, [&](std::size_t index, int) { job(index); });
+    };
     for (const SceneObject& object : scene.objects) {
-        WorldMesh mesh = world_mesh(object, normal_options(scene, object));
+        WorldMesh mesh = world_mesh(object, normal_options(scene, object), parallel);
         PreparedObject prepared;
         prepared.positions = std::move(mesh.positions);
         prepared.normals = std::move(mesh.normals);

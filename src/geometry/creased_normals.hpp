@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "litkit/mesh.hpp"
 
 namespace litkit {
@@ -37,5 +38,12 @@ struct CreasedNormals {
 
 // Throws as corner_normals does.
 CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease_angle_degrees);
+
+// vertex_normals(mesh, weighting), its independent parts run through
+// `parallel`: the welding beside the triangles' weights (Mean and Area, one
+// vector a triangle), and the normalising. The same normals, bit for bit:
+// the weights are summed in triangle order on the calling thread.
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
+                                      const ParallelFor& parallel);
 
 }  // namespace litkit

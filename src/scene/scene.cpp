@@ -17,6 +17,7 @@
 #include "geometry/creased_normals.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/validate_internal.hpp"
+#include "scene/world_mesh.hpp"
 
 namespace litkit {
 
@@ -228,6 +229,11 @@ NormalOptions normal_options(const Scene& scene, const SceneObject& object) {
 WorldMesh world_mesh(const SceneObject& object) { return world_mesh(object, NormalOptions{}); }
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
+    return world_mesh(object, options, ParallelFor{});
+}
+
+WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
+                     const ParallelFor& parallel) {
     Mesh mesh = object_mesh(object);
     std::vector<glm::vec3> local_normals;
     const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
@@ -239,20 +245,20 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
                          creased_normals(mesh, options.normals, *options.crease_angle_degrees),
                          local_normals);
     } else {
-        local_normals = vertex_normals(mesh, options.normals);
+        local_normals = vertex_normals(mesh, options.normals, parallel);
     }
     const glm::mat4 model = object_to_world(object);
     const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
 
     WorldMesh world;
-    world.positions.reserve(mesh.positions.size());
-    world.normals.reserve(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        world.positions.push_back(glm::vec3(model * glm::vec4(mesh.positions[i], 1.0f)));
+    world.positions.resize(mesh.positions.size());
+    world.normals.resize(mesh.positions.size());
+    parallel_chunks(parallel, mesh.positions.size(), 16384, [&](std::size_t i) {
+        world.positions[i] = glm::vec3(model * glm::vec4(mesh.positions[i], 1.0f));
         const glm::vec3 n = rotation * local_normals[i];
         const float length = glm::length(n);
-        world.normals.push_back(length > 0.0f ? n / length : n);
-    }
+        world.normals[i] = length > 0.0f ? n / length : n;
+    });
     world.triangles = std::move(mesh.triangles);
     return world;
 }
