@@ -132,7 +132,9 @@ void sort_by_cell(std::vector<GridPoint>& points, int key_bits) {
     // written before it is read (not zero-filled first: 3 MB for a
     // 261k-triangle sphere).
     const std::size_t count = points.size();
-    const auto buffer = std::make_unique_for_overwrite<GridPoint[]>(count);
+    // (new T[n], not make_unique_for_overwrite, which the web build's
+    // C++ library lacks: the same default-initialised array.)
+    const std::unique_ptr<GridPoint[]> buffer(new GridPoint[count]);
     GridPoint* from = points.data();
     GridPoint* to = buffer.get();
     std::vector<std::size_t> bucket_start(bucket_count);
