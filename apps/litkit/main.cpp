@@ -618,14 +618,17 @@ void show_progress(int done, int total, double seconds) {
 }
 
 int run_turntable(const TurntableArguments& arguments) {
-    const litkit::PngEncoder encoder;  // for frames into a folder
-    litkit::Scene scene = load(arguments.scene);
-    settle_missing_lighting(scene, arguments.yes);
     const std::vector<std::string>& files = arguments.scene.scenes;
     const std::string target =
         arguments.output.empty() ? output_beside(files, ".gif").string() : arguments.output;
     // "DIR/" or an existing folder: numbered PNGs; anything else: one GIF.
     const bool to_folder = target.ends_with('/') || fs::is_directory(target);
+    // Frames into a folder are PNGs: their encoder first, while this is the
+    // only thread (litkit::PngEncoder).
+    std::optional<litkit::PngEncoder> encoder;
+    if (to_folder) encoder.emplace();
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
     const fs::path output(target);
     if (!to_folder) refuse_to_overwrite_inputs(scene, files, output);
 
@@ -649,7 +652,7 @@ int run_turntable(const TurntableArguments& arguments) {
             number.insert(0, static_cast<std::size_t>(digits) - number.size(), '0');
             const fs::path frame = output / ("frame-" + number + ".png");
             refuse_to_overwrite_inputs(scene, files, frame);
-            encoder.write(image, frame);
+            encoder->write(image, frame);
             written.push_back(frame);
         } else {
             frames.push_back(std::move(image));

@@ -29,25 +29,28 @@ namespace {
 // filter, deflated by zlib with its run-length strategy, the container
 // written here. libpng compresses a picture as one stream on one thread;
 // from `split_from_bytes` of filtered rows on, the rows below a split are
-// deflated on a second thread as a stream of their own, the rows above
-// ended on a byte boundary (a sync flush), and the two are joined: one zlib
-// stream, its Adler-32 combined. The split depends only on the picture, so
-// the bytes are the same on every machine.
+// deflated on a second thread apart from the rows above, which end on a
+// byte boundary (a sync flush), and the two are joined: one zlib stream,
+// its Adler-32 combined. The split depends only on the picture, so the
+// bytes are the same on every machine.
 constexpr std::size_t split_from_bytes = std::size_t{512} << 10;
 // zlib's run-length pass takes about 1 + this many times as long over a
 // filtered byte that is not 0 (a literal, or a short run) as over a 0 in a
 // long run: 9-14 ns against 0.5 ns a byte here (docs/performance.md,
 // "Session 8"). What png_split_row weighs rows by.
 constexpr std::uint64_t literal_weight = 20;
-// Each piece is deflated as a run of streams of at most this many filtered
-// bytes, each ended on a byte boundary (a sync flush) and the next begun
-// afresh (deflateReset). zlib slides its window once a stream has taken
-// 65,274 bytes, and every 32 KiB after: it moves the window and rewrites its
-// two 64 KiB hash tables, which its run-length strategy never reads. That
-// was a third of the time (docs/performance.md, "Session 8": the default
-// scene 5.7 -> 3.6 ms, 1920×1080 20.5 -> 11.9 ms, the files as small).
-// Only runs within a stream are found, so a restart costs at most a run cut
-// in two, and an empty stored block (5 bytes).
+// Each piece is deflated as a run of raw deflate streams of whole rows, at
+// most this many filtered bytes each (or one row, if longer), each ended
+// on a byte boundary (a sync flush) and the next begun afresh
+// (deflateReset). zlib slides its window once a stream has taken 65,274
+// bytes, and every 32 KiB after: it moves the window and rewrites its two
+// 64 KiB hash tables, which its run-length strategy never reads. That was a
+// third of the time (docs/performance.md, "Session 8": the default scene
+// 5.7 -> 3.6 ms, 1920×1080 20.5 -> 11.9 ms, the files as small). Only runs
+// within a stream are found, so a restart costs at most a run cut in two,
+// the block it ends (a new one starts, with its own codes) and an empty
+// stored block (5 bytes). A row longer than 65,274 bytes (21,758 pixels)
+// still slides within itself, as before.
 constexpr std::size_t stream_bytes = 64000;
 // IDAT chunks of at most this many bytes (a chunk may hold 2^31 − 1).
 constexpr std::size_t idat_chunk_bytes = std::size_t{1} << 20;
