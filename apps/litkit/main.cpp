@@ -82,12 +82,11 @@ bool is_standard_output(const std::filesystem::path& output) {
            named.st_dev == standard.st_dev && named.st_ino == standard.st_ino;
 }
 
-void write_png_output(const litkit::PngEncoder& encoder, const litkit::Image& image,
-                      const std::filesystem::path& output) {
+void write_png_output(const litkit::Image& image, const std::filesystem::path& output) {
     if (is_standard_output(output)) {
-        litkit::write_all(STDOUT_FILENO, encoder.encode(image), "standard output");
+        litkit::write_all(STDOUT_FILENO, litkit::encode_png(image), "standard output");
     } else {
-        encoder.write(image, output);
+        litkit::write_png(image, output);
     }
 }
 
@@ -342,8 +341,6 @@ litkit::Scene load(const SceneArguments& arguments) {
 }
 
 int run_render(const RenderArguments& arguments) {
-    // First, while this is the process's only thread (litkit::PngEncoder).
-    const litkit::PngEncoder encoder;
     litkit::Scene scene = load(arguments.scene);
     settle_missing_lighting(scene, arguments.yes);
 
@@ -361,7 +358,7 @@ int run_render(const RenderArguments& arguments) {
     Backend renderer(scene, arguments.scene);
     litkit::Image image;
     renderer.render_into(image);
-    write_png_output(encoder, image, output);
+    write_png_output(image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     (is_standard_output(output) ? std::cerr : std::cout) << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
@@ -486,7 +483,6 @@ int run_compare(const CompareArguments& arguments) {
     SceneArguments scene_arguments = arguments.scene;
     scene_arguments.width.reset();
     scene_arguments.height.reset();
-    const litkit::PngEncoder encoder;  // while this is the only thread
     litkit::Scene scene = load(scene_arguments);
     if (arguments.vary != "both") settle_missing_lighting(scene, arguments.yes);
     const std::vector<std::string>& files = arguments.scene.scenes;
@@ -504,7 +500,7 @@ int run_compare(const CompareArguments& arguments) {
     options.threads = arguments.scene.threads.value_or(0);
     const auto start = std::chrono::steady_clock::now();
     const litkit::CompareGrid grid = litkit::compare_models(scene, options);
-    encoder.write(grid.image, output);
+    litkit::write_png(grid.image, output);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!grid.overridden_objects.empty()) {
@@ -618,17 +614,13 @@ void show_progress(int done, int total, double seconds) {
 }
 
 int run_turntable(const TurntableArguments& arguments) {
+    litkit::Scene scene = load(arguments.scene);
+    settle_missing_lighting(scene, arguments.yes);
     const std::vector<std::string>& files = arguments.scene.scenes;
     const std::string target =
         arguments.output.empty() ? output_beside(files, ".gif").string() : arguments.output;
     // "DIR/" or an existing folder: numbered PNGs; anything else: one GIF.
     const bool to_folder = target.ends_with('/') || fs::is_directory(target);
-    // Frames into a folder are PNGs: their encoder first, while this is the
-    // only thread (litkit::PngEncoder).
-    std::optional<litkit::PngEncoder> encoder;
-    if (to_folder) encoder.emplace();
-    litkit::Scene scene = load(arguments.scene);
-    settle_missing_lighting(scene, arguments.yes);
     const fs::path output(target);
     if (!to_folder) refuse_to_overwrite_inputs(scene, files, output);
 
@@ -652,7 +644,7 @@ int run_turntable(const TurntableArguments& arguments) {
             number.insert(0, static_cast<std::size_t>(digits) - number.size(), '0');
             const fs::path frame = output / ("frame-" + number + ".png");
             refuse_to_overwrite_inputs(scene, files, frame);
-            encoder->write(image, frame);
+            litkit::write_png(image, frame);
             written.push_back(frame);
         } else {
             frames.push_back(std::move(image));

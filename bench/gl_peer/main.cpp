@@ -7,7 +7,7 @@
 // It takes from litkit only what makes it draw the same picture: the scene
 // file (litkit::load_scene / default_scene), each object's world-space mesh
 // with its vertex normals (litkit::world_mesh, so the geometry is the very
-// same), and PNG writing (litkit::PngEncoder, so the file written costs the
+// same), and PNG writing (litkit::write_png, so the file written costs the
 // same to encode on both sides). `--check` also renders litkit's picture,
 // to compare. Everything that draws is its own:
 //
@@ -362,10 +362,6 @@ litkit::Scene load(const Arguments& a) {
 }
 
 int run(const Arguments& a) {
-    // As litkit render does: the PNG's second thread started first, while
-    // this is the only thread (litkit::PngEncoder), so that the PNG costs
-    // both sides the same.
-    const litkit::PngEncoder encoder;
     const litkit::Scene scene = load(a);
     const auto setup_start = clock_type::now();
     Context context;
@@ -375,7 +371,7 @@ int run(const Arguments& a) {
 
     if (!a.output.empty()) {  // the whole process: one frame to a PNG
         peer.frame(rgba);
-        encoder.write(peer.picture(rgba), a.output);
+        litkit::write_png(peer.picture(rgba), a.output);
         return 0;
     }
     if (a.check) {

@@ -4,7 +4,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,35 +39,6 @@ std::string encode_png(const Image& image, int compression_level = default_png_c
 /// Writes `image` as a PNG, whole or not at all (write_file_atomically).
 /// Throws IoError (Access::Write) on failure, leaving any old file untouched.
 void write_png(const Image& image, const std::filesystem::path& path);
-
-/// encode_png and write_png with a second thread of the encoder's own,
-/// started when the encoder is made and kept until it goes, instead of a
-/// thread started for each picture. The same bytes. A program that writes a
-/// picture at its end, as the `litkit` tool does, makes its encoder at the
-/// start, while it has only the one thread: started later, beside other
-/// threads (a renderer's), a thread took 0.5 ms to start and the 800×600
-/// default scene's PNG 6–7 ms instead of 3.5 (docs/performance.md,
-/// "Session 8"). One picture at a time: calls from several threads take
-/// turns.
-class PngEncoder {
-public:
-    /// Starts the thread (where none can be had, each picture is encoded
-    /// as encode_png encodes it).
-    PngEncoder();
-    ~PngEncoder();
-    PngEncoder(const PngEncoder&) = delete;
-    PngEncoder& operator=(const PngEncoder&) = delete;
-
-    /// encode_png(image, compression_level).
-    std::string encode(const Image& image,
-                       int compression_level = default_png_compression) const;
-    /// write_png(image, path).
-    void write(const Image& image, const std::filesystem::path& path) const;
-
-private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
-};
 
 /// Reads an 8-bit RGB or RGBA PNG (alpha dropped). Throws IoError.
 Image read_png(const std::filesystem::path& path);

@@ -8,7 +8,6 @@
 #include <cstring>
 #include <exception>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,7 +17,6 @@
 
 #include "litkit/error.hpp"
 #include "core/files.hpp"
-#include "core/png.hpp"
 #include "cpu/thread_pool.hpp"
 
 namespace litkit {
@@ -28,18 +26,13 @@ namespace {
 // PNG output (docs/design.md, "PNG"): each row filtered with PNG's "up"
 // filter, deflated by zlib with its run-length strategy, the container
 // written here. libpng compresses a picture as one stream on one thread;
-// from `split_from_bytes` of filtered rows on, the rows below a split are
-// deflated on a second thread apart from the rows above, which end on a
+// from `split_from_bytes` of filtered rows on, the lower half of the rows
+// is deflated on a second thread apart from the upper, which ends on a
 // byte boundary (a sync flush), and the two are joined: one zlib stream,
-// its Adler-32 combined. The split depends only on the picture, so the
-// bytes are the same on every machine.
+// its Adler-32 combined. The split depends only on the picture's size, so
+// the bytes are the same on every machine.
 constexpr std::size_t split_from_bytes = std::size_t{512} << 10;
-// zlib's run-length pass takes about 1 + this many times as long over a
-// filtered byte that is not 0 (a literal, or a short run) as over a 0 in a
-// long run: 9-14 ns against 0.5 ns a byte here (docs/performance.md,
-// "Session 8"). What png_split_row weighs rows by.
-constexpr std::uint64_t literal_weight = 20;
-// Each piece is deflated as a run of raw deflate streams of whole rows, at
+// Each half is deflated as a run of raw deflate streams of whole rows, at
 // most this many filtered bytes each (or one row, if longer), each ended
 // on a byte boundary (a sync flush) and the next begun afresh
 // (deflateReset). zlib slides its window once a stream has taken 65,274
@@ -147,50 +140,7 @@ void append_chunk(std::string& out, const char (&type)[5], const unsigned char* 
 
 }  // namespace
 
-// Each row weighed by its length plus `literal_weight` for each byte its
-// filter leaves non-zero (a byte that differs from the one above it). A
-// rendered picture's background rows filter to zeros, its objects' do not,
-// and the objects may lie anywhere: split at half the rows, the upper half
-// of the default scene (the cube's lit face) took 1.6 times as long as the
-// lower.
-int png_split_row(const Image& image) {
-    const std::size_t filtered_bytes =
-        (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
-    if (filtered_bytes < split_from_bytes || image.height < 2) return image.height;
-    const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-    std::vector<std::uint64_t> row_cost(static_cast<std::size_t>(image.height));
-    std::uint64_t total = 0;
-    // Counted 8 bytes at a time: a word that differs counts as 8 (a tenth of
-    // the time of counting bytes, 0.05 ms at 800×600, and as good a guide).
-    const std::vector<std::uint8_t> zeros(row_bytes, 0);  // above the first row
-    for (int y = 0; y < image.height; ++y) {
-        const std::uint8_t* row = image.pixel(0, y);
-        const std::uint8_t* above = y ? image.pixel(0, y - 1) : zeros.data();
-        std::size_t changed = 0;
-        std::size_t i = 0;
-        for (; i + 8 <= row_bytes; i += 8) {
-            std::uint64_t here, there;
-            std::memcpy(&here, row + i, 8);
-            std::memcpy(&there, above + i, 8);
-            changed += here != there ? 8 : 0;
-        }
-        for (; i < row_bytes; ++i) changed += row[i] != above[i];
-        row_cost[static_cast<std::size_t>(y)] = row_bytes + 1 + literal_weight * changed;
-        total += row_cost[static_cast<std::size_t>(y)];
-    }
-    std::uint64_t above = 0;
-    int split = 0;
-    while (split < image.height - 1 && 2 * (above + row_cost[static_cast<std::size_t>(split)]) <= total)
-        above += row_cost[static_cast<std::size_t>(split++)];
-    return std::max(split, 1);
-}
-
-namespace {
-
-// encode_png, the second piece deflated by `pool`'s other thread, or by a
-// thread started for it where there is no pool (none to be had: the same
-// bytes, one piece after the other).
-std::string encode_png_with(const Image& image, int compression_level, ThreadPool* pool) {
+std::string encode_png(const Image& image, int compression_level) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
         throw ArgumentError("encode_png: image has no pixels or an inconsistent size");
@@ -198,16 +148,19 @@ std::string encode_png_with(const Image& image, int compression_level, ThreadPoo
     if (compression_level < 0 || compression_level > 9)
         throw ArgumentError("encode_png: compression level must be 0-9");
 
-    const int split = png_split_row(image);
+    const std::size_t filtered_bytes =
+        (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
+    const int split = filtered_bytes >= split_from_bytes && image.height >= 2 ? image.height / 2
+                                                                               : image.height;
     Piece upper;
     Piece lower;
     if (split < image.height) {
-        std::optional<ThreadPool> started;
-        if (!pool) {
-            try {
-                pool = &started.emplace(2);
-            } catch (const std::system_error&) {
-            }
+        // The second piece on a second thread; with no thread to be had,
+        // the same bytes, one piece after the other.
+        std::optional<ThreadPool> pool;
+        try {
+            pool.emplace(2);
+        } catch (const std::system_error&) {
         }
         const auto deflate_piece = [&](std::size_t piece, int) {
             if (piece == 0) {
@@ -263,40 +216,8 @@ std::string encode_png_with(const Image& image, int compression_level, ThreadPoo
     return png;
 }
 
-}  // namespace
-
-std::string encode_png(const Image& image, int compression_level) {
-    return encode_png_with(image, compression_level, nullptr);
-}
-
 void write_png(const Image& image, const std::filesystem::path& path) {
     write_file_atomically(path, encode_png(image));
-}
-
-struct PngEncoder::Impl {
-    std::mutex mutex;  // one picture at a time
-    std::optional<ThreadPool> pool;
-};
-
-PngEncoder::PngEncoder() : impl_(std::make_unique<Impl>()) {
-    try {
-        impl_->pool.emplace(2);
-    } catch (const std::system_error&) {
-        // No thread to be had: each picture's pieces one after the other.
-    }
-}
-
-PngEncoder::~PngEncoder() = default;
-
-std::string PngEncoder::encode(const Image& image, int compression_level) const {
-    std::lock_guard lock(impl_->mutex);
-    // Without a pool of its own, encode_png's thread per picture.
-    return impl_->pool ? encode_png_with(image, compression_level, &*impl_->pool)
-                       : encode_png_with(image, compression_level, nullptr);
-}
-
-void PngEncoder::write(const Image& image, const std::filesystem::path& path) const {
-    write_file_atomically(path, encode(image));
 }
 
 Image read_png(const std::filesystem::path& path) {
