@@ -53,3 +53,21 @@ TEST(ThreadPool, TheFirstExceptionReachesTheCallerAndThePoolGoesOn) {
 }
 
 }  // namespace
+
+// A pool's constructor waits until each worker has started (so that a new
+// thread does not sit on its creator's core until a scheduler tick): pools
+// made and dropped at once, with and without a job, must neither hang nor
+// lose a worker. A lost start would hang here (and ctest's time-out fails
+// the test).
+TEST(ThreadPool, PoolsMadeAndDroppedAtOnceStartEveryWorker) {
+    for (int round = 0; round < 200; ++round) {
+        const int threads = 1 + round % 4;
+        litkit::ThreadPool pool(threads);
+        EXPECT_EQ(pool.size(), threads);
+        if (round % 2) {
+            std::atomic<int> done{0};
+            pool.parallel_for(8, [&](std::size_t, int) { ++done; });
+            EXPECT_EQ(done.load(), 8);
+        }
+    }
+}

@@ -64,6 +64,7 @@ private:
     std::unique_ptr<Stretch[]> stretches_;
     std::size_t generation_ = 0;
     int busy_workers_ = 0;
+    int started_workers_ = 0;  // workers that have begun worker_loop
     bool stopping_ = false;
     std::exception_ptr failure_;
 };
