@@ -12,7 +12,13 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 #include "cpu/shade_kernel.hpp"
 #include "cpu/shade_kernel_impl.hpp"  // equations::pow of batches
@@ -119,6 +125,39 @@ struct VisibilityBuffers {
     }
 };
 
+#if defined(__linux__)
+// A copy of `values` that ends where an inaccessible page begins: a kernel
+// that touches memory past the end, even with every lane masked off,
+// faults (GCC turns a masked extract and store into one instruction, and
+// the CPU was seen to fault on it with a mask of 0).
+template <class T>
+class GuardedCopy {
+  public:
+    explicit GuardedCopy(const std::vector<T>& values) : size_(values.size()) {
+        const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+        const std::size_t bytes = size_ * sizeof(T);
+        mapped_ = (bytes + page - 1) / page * page + page;
+        base_ = mmap(nullptr, mapped_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (base_ == MAP_FAILED) throw std::runtime_error("mmap failed");
+        char* const guard = static_cast<char*>(base_) + mapped_ - page;
+        if (mprotect(guard, page, PROT_NONE) != 0) throw std::runtime_error("mprotect failed");
+        data_ = reinterpret_cast<T*>(guard - bytes);
+        std::memcpy(static_cast<void*>(data_), values.data(), bytes);
+    }
+    GuardedCopy(const GuardedCopy&) = delete;
+    GuardedCopy& operator=(const GuardedCopy&) = delete;
+    ~GuardedCopy() { munmap(base_, mapped_); }
+    T* data() { return data_; }
+    std::vector<T> values() const { return std::vector<T>(data_, data_ + size_); }
+
+  private:
+    std::size_t size_;
+    std::size_t mapped_ = 0;
+    void* base_ = nullptr;
+    T* data_ = nullptr;
+};
+#endif
+
 // One pixel's test and writes, as render.cpp states them.
 void expect_pixel(float p0, float p1, float p2, const void* triangle, VisibilityBuffers& b, std::size_t i) {
     volatile float sum = p0 + p1;
@@ -206,8 +245,31 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
                     expected = got;
                     std::vector<int> begin_got(static_cast<std::size_t>(rows), 100), end_got(begin_got.size(), 0);
                     std::vector<int> begin_expected = begin_got, end_expected = end_got;
+#if defined(__linux__)
+                    {
+                        // The same call on buffers that end at an inaccessible
+                        // page: it must not touch past them, and writes the same.
+                        GuardedCopy<float> depth_copy(got.depth), weight1_copy(got.weight1),
+                            weight2_copy(got.weight2);
+                        GuardedCopy<const void*> visible_copy(got.visible);
+                        GuardedCopy<int> begin_copy(begin_got), end_copy(end_got);
+                        set->visibility_small(t, depth_copy.data(), visible_copy.data(), weight1_copy.data(),
+                                              weight2_copy.data(), stride, begin_copy.data(), end_copy.data());
+                        VisibilityBuffers guarded = got;
+                        guarded.depth = depth_copy.values();
+                        guarded.weight1 = weight1_copy.values();
+                        guarded.weight2 = weight2_copy.values();
+                        guarded.visible = visible_copy.values();
+                        set->visibility_small(t, got.depth.data(), got.visible.data(), got.weight1.data(),
+                                              got.weight2.data(), stride, begin_got.data(), end_got.data());
+                        ASSERT_TRUE(guarded == got) << set->name << ": span " << span << ", rows " << rows;
+                        ASSERT_EQ(begin_copy.values(), begin_got);
+                        ASSERT_EQ(end_copy.values(), end_got);
+                    }
+#else
                     set->visibility_small(t, got.depth.data(), got.visible.data(), got.weight1.data(),
                                           got.weight2.data(), stride, begin_got.data(), end_got.data());
+#endif
                     for (int r = 0; r < rows; ++r) {
                         for (int x = 0; x <= span; ++x) {
                             std::int32_t e[3];

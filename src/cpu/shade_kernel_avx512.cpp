@@ -50,10 +50,85 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
     }
 }
 
+// visibility_small of a box at most 8 pixels wide, two rows at a time:
+// lanes 0-7 the first row's pixels, lanes 8-15 the next row's.
+void visibility_small_pairs(const SmallTriangle& t, float* depth, const void** visible,
+                            float* weight1, float* weight2, std::size_t stride, int* touched_begin,
+                            int* touched_end) {
+    const __m512i column = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
+    const __m512i second = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
+    const __mmask16 in_box = _mm512_cmple_epi32_mask(column, _mm512_set1_epi32(t.span));
+    __m512i offset[3], bias[3];
+    __m512 w[3];
+    for (int k = 0; k < 3; ++k) {
+        offset[k] = _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(t.step_x[k])),
+                                     _mm512_mullo_epi32(second, _mm512_set1_epi32(t.step_y[k])));
+        bias[k] = _mm512_set1_epi32(t.bias[k]);
+        w[k] = _mm512_set1_ps(t.weight[k]);
+    }
+    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(t.triangle)));
+    std::int32_t row_origin[3] = {t.origin[0], t.origin[1], t.origin[2]};
+    for (int row = 0; row < t.rows; row += 2) {
+        __m512i e[3];
+        // The second row only where there is one.
+        __mmask16 covered = row + 1 < t.rows ? in_box : static_cast<__mmask16>(in_box & 0xffu);
+        for (int k = 0; k < 3; ++k) {
+            e[k] = _mm512_add_epi32(_mm512_set1_epi32(row_origin[k]), offset[k]);
+            covered = _mm512_mask_cmpge_epi32_mask(covered, e[k], _mm512_setzero_si512());
+            row_origin[k] += 2 * t.step_y[k];
+        }
+        if (!covered) continue;
+        const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
+        // The second row's place; where there is none (its lanes are all
+        // masked off), the first row's, so that no address is past the
+        // buffers.
+        const std::size_t next = row + 1 < t.rows ? at + stride : at;
+        const auto first_half = static_cast<__mmask8>(covered), second_half = static_cast<__mmask8>(covered >> 8);
+        const __m512 p0 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[0], bias[0])), w[0]);
+        const __m512 p1 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[1], bias[1])), w[1]);
+        const __m512 p2 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[2], bias[2])), w[2]);
+        const __m512 inverse_w = _mm512_add_ps(_mm512_add_ps(p0, p1), p2);
+        const __m512 old_depth = _mm512_insertf32x8(
+            _mm512_castps256_ps512(_mm256_maskz_loadu_ps(first_half, depth + at)),
+            _mm256_maskz_loadu_ps(second_half, depth + next), 1);
+        const __mmask16 nearer = _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
+        if (nearer) {
+            const auto nearer_first = static_cast<__mmask8>(nearer), nearer_second = static_cast<__mmask8>(nearer >> 8);
+            auto store = [&](float* buffer, __m512 value) {
+                _mm256_mask_storeu_ps(buffer + at, nearer_first, _mm512_castps512_ps256(value));
+                // Extracted into a register first: GCC would otherwise fuse
+                // extract and store into one vextractf32x8 to memory, which
+                // faults on the masked-off lanes' addresses (seen here, mask
+                // 0 or 1, at a page's end: GlBackend.MatchesCpuOnEveryExample
+                // and the guard pages of Kernels.SmallTriangles...), where a
+                // masked vmovups does not.
+                __m256 upper = _mm512_extractf32x8_ps(value, 1);
+                asm("" : "+v"(upper));
+                _mm256_mask_storeu_ps(buffer + next, nearer_second, upper);
+            };
+            store(depth, inverse_w);
+            store(weight1, p1);
+            store(weight2, p2);
+            _mm512_mask_storeu_epi64(visible + at, nearer_first, tri);
+            _mm512_mask_storeu_epi64(visible + next, nearer_second, tri);
+        }
+        for (int half = 0; half < 2; ++half) {
+            const unsigned bits = (static_cast<unsigned>(covered) >> (8 * half)) & 0xffu;
+            if (!bits) continue;
+            touched_begin[row + half] = std::min(touched_begin[row + half], t.min_x + __builtin_ctz(bits));
+            touched_end[row + half] = std::max(touched_end[row + half], t.min_x + 32 - __builtin_clz(bits));
+        }
+    }
+}
+
 // visibility_small a row at a time: a row's (at most 9) pixels in the
-// lanes of one vector.
+// lanes of one vector; boxes at most 8 pixels wide two rows at a time.
 void visibility_small(const SmallTriangle& t, float* depth, const void** visible, float* weight1,
                       float* weight2, std::size_t stride, int* touched_begin, int* touched_end) {
+    if (t.span < 8 && t.rows > 1) {
+        visibility_small_pairs(t, depth, visible, weight1, weight2, stride, touched_begin, touched_end);
+        return;
+    }
     const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
     const __mmask16 in_box = _mm512_cmple_epi32_mask(lane, _mm512_set1_epi32(t.span));
     __m512i along[3], bias[3];
