@@ -473,6 +473,10 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     std::vector<BinnedTriangle>& pending = scratch.pending;
     pending.clear();
     chunk.clipped.clear();
+    // Triangles per band of rows, counts[b + 1] for band b.
+    const std::size_t bands = static_cast<std::size_t>(band_count);
+    std::vector<std::uint32_t>& counts = scratch.band_count;
+    counts.assign(bands + 1, 0);
 
     bool flat_done = false;  // the current source triangle's flat colour is computed
     // Setup of one (piece of a) triangle from its window corners; nothing
@@ -536,6 +540,8 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
         pending.push_back({raster, shade});
+        // Counted for binning (below) as it is made.
+        for (int b = top / band_height; b <= bottom / band_height; ++b) ++counts[static_cast<std::size_t>(b) + 1];
     };
     auto emit = [&](const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
                     std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
@@ -600,21 +606,16 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     }
 
     // The clipped pieces' varyings stay put from here on: link them.
-    for (BinnedTriangle& binned : pending) {
-        ShadeTriangle& tri = binned.shade;
-        tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
+    if (!chunk.clipped.empty()) {
+        for (BinnedTriangle& binned : pending) {
+            ShadeTriangle& tri = binned.shade;
+            tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
+        }
     }
 
     // Binning: each band of rows gets a copy of the triangles that may touch
-    // it, in setup order (counted first, so the chunk's one array is sized
-    // exactly).
-    const std::size_t bands = static_cast<std::size_t>(band_count);
-    std::vector<std::uint32_t>& counts = scratch.band_count;
-    counts.assign(bands + 1, 0);
-    for (const BinnedTriangle& binned : pending) {
-        const RasterTriangle& tri = binned.raster;
-        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b) ++counts[b + 1];
-    }
+    // it, in setup order (counted as they were made, so the chunk's one
+    // array is sized exactly).
     chunk.band_start.resize(bands + 1);
     chunk.band_start[0] = 0;
     for (std::size_t b = 0; b < bands; ++b) {
@@ -884,6 +885,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     kernels.perspective_weights(&s.depth[offset + begin], &s.weight1[offset + begin],
                                 &s.weight2[offset + begin], static_cast<std::size_t>(end - begin),
                                 &s.q0[begin], &s.q1[begin], &s.q2[begin]);
+    bool background_between = false;  // some pixel in [begin, end) has no triangle
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);
         // The triangle a few pixels on, fetched ahead: the visibility buffer
@@ -891,6 +893,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (x + 12 < end) __builtin_prefetch(s.visible[i + 12]);
         const ShadeTriangle* tri = s.visible[i];
         if (!tri) {
+            background_between = true;
             flush();
             continue;
         }
@@ -920,6 +923,81 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             s.r[x] = c.x, s.g[x] = c.y, s.b[x] = c.z;
             continue;
         }
+#if defined(__SSE2__)
+        if (object.shading == Shading::Phong && tri->clipped < 0) {
+            // Phong, the mesh's own corners: this pixel's span and those
+            // after it whose triangles are too, of this object, in one loop
+            // (a dense mesh's spans are one to three pixels: the checks and
+            // look-ups of the general path below would be most of the work).
+            // The same formulas as there.
+            if (run_object != &object || (run_length > 0 && run_first + static_cast<int>(run_length) != x))
+                flush();
+            if (run_length == 0) run_first = x;
+            run_object = &object;
+            const ShadeTriangle* const* visible = s.visible.data() + offset;
+            // Column x's place in the run's arrays is x − run_first.
+            float* const out[6] = {s.px.data() - run_first, s.py.data() - run_first, s.pz.data() - run_first,
+                                   s.nx.data() - run_first, s.ny.data() - run_first, s.nz.data() - run_first};
+            const float* const q0 = s.q0.data();
+            const float* const q1 = s.q1.data();
+            const float* const q2 = s.q2.data();
+            const glm::vec3* const positions = object.positions.data();
+            const glm::vec3* const normals = object.normals.data();
+            const std::uint32_t object_index = tri->object;
+            auto load3 = [](const glm::vec3& v) {  // (x, y, z, 0), reading 3 floats
+                const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&v.x));
+                return _mm_movelh_ps(xy, _mm_load_ss(&v.z));
+            };
+            auto store = [](__m128 v, float* x, float* y, float* z) {
+                _mm_store_ss(x, v);
+                _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
+                _mm_store_ss(z, _mm_movehl_ps(v, v));
+            };
+            int at = x;
+            const ShadeTriangle* span = tri;
+            for (;;) {
+                if (at + static_cast<int>(short_span) <= end && visible[at + short_span - 1] == span) {
+                    // A long span: the kernel set's interpolate.
+                    int span_end = at + 1;
+                    while (span_end < end && visible[span_end] == span) ++span_end;
+                    float corner[3][6];
+                    for (int k = 0; k < 3; ++k) {
+                        const glm::vec3& p = positions[span->vertex[k]];
+                        const glm::vec3& n = normals[span->vertex[k]];
+                        corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
+                        corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
+                    }
+                    kernels.interpolate(q0 + at, q1 + at, q2 + at, static_cast<std::size_t>(span_end - at),
+                                        corner, nullptr,
+                                        {out[0] + at, out[1] + at, out[2] + at, out[3] + at, out[4] + at,
+                                         out[5] + at});
+                    at = span_end;
+                } else {
+                    const __m128 p0 = load3(positions[span->vertex[0]]), p1 = load3(positions[span->vertex[1]]),
+                                 p2 = load3(positions[span->vertex[2]]);
+                    const __m128 n0 = load3(normals[span->vertex[0]]), n1 = load3(normals[span->vertex[1]]),
+                                 n2 = load3(normals[span->vertex[2]]);
+                    // The triangle a few pixels on, fetched ahead (once a span).
+                    if (at + 12 < end) __builtin_prefetch(visible[at + 12]);
+                    do {
+                        const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]), c = _mm_set1_ps(q2[at]);
+                        store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, p0), _mm_mul_ps(b, p1)), _mm_mul_ps(c, p2)),
+                              out[0] + at, out[1] + at, out[2] + at);
+                        store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, n0), _mm_mul_ps(b, n1)), _mm_mul_ps(c, n2)),
+                              out[3] + at, out[4] + at, out[5] + at);
+                        ++at;
+                    } while (at < end && visible[at] == span);
+                }
+                if (at >= end) break;
+                const ShadeTriangle* const next = visible[at];
+                if (!next || next->object != object_index || next->clipped >= 0) break;
+                span = next;
+            }
+            run_length += static_cast<std::size_t>(at - x);
+            x = at - 1;
+            continue;
+        }
+#endif
         // Phong or faceted: the span of this triangle, interpolated at once
         // (the formulas of interpolate_surface, in SIMD).
         int span_end = x + 1;
@@ -1025,7 +1103,12 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     };
     fill_background(0, begin);
     fill_background(end, width);
-    int x = begin;
+    if (!background_between && begin < end) {  // one run: no need to look for its ends
+        s.shaded_pixels += static_cast<std::size_t>(end - begin);
+        kernels.encode(s.r.data() + begin, s.g.data() + begin, s.b.data() + begin,
+                       static_cast<std::size_t>(end - begin), scene.output.gamma, row + 3 * begin);
+    }
+    int x = background_between ? begin : end;
     while (x < end) {
         if (!s.visible[offset + x]) {
             fill_background(x, x + 1);
