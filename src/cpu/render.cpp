@@ -329,6 +329,25 @@ inline void interpolate_surface(const PreparedObject& object, const ShadeTriangl
     if (object.shading == Shading::Faceted) n = object.face_normals[tri.source];
 }
 
+#if defined(__SSE2__)
+// The fragment stage's short spans, x, y and z in the lanes of one SSE
+// vector: (v[0], v[1], v[2], 0), reading 3 floats; the lanes to three
+// places; and q0·c0 + q1·c1 + q2·c2, interpolate_surface's products and
+// sums in its order.
+inline __m128 load3(const float* v) {
+    const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(v));
+    return _mm_movelh_ps(xy, _mm_load_ss(v + 2));
+}
+inline void store3(__m128 v, float* x, float* y, float* z) {
+    _mm_store_ss(x, v);
+    _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
+    _mm_store_ss(z, _mm_movehl_ps(v, v));
+}
+inline __m128 mix3(__m128 q0, __m128 q1, __m128 q2, __m128 c0, __m128 c1, __m128 c2) {
+    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(q0, c0), _mm_mul_ps(q1, c1)), _mm_mul_ps(q2, c2));
+}
+#endif
+
 }  // namespace
 
 // Renderer::probe's record of one visible pixel, made after its row is
@@ -944,15 +963,6 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             const glm::vec3* const positions = object.positions.data();
             const glm::vec3* const normals = object.normals.data();
             const std::uint32_t object_index = tri->object;
-            auto load3 = [](const glm::vec3& v) {  // (x, y, z, 0), reading 3 floats
-                const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&v.x));
-                return _mm_movelh_ps(xy, _mm_load_ss(&v.z));
-            };
-            auto store = [](__m128 v, float* x, float* y, float* z) {
-                _mm_store_ss(x, v);
-                _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
-                _mm_store_ss(z, _mm_movehl_ps(v, v));
-            };
             int at = x;
             const ShadeTriangle* span = tri;
             for (;;) {
@@ -973,18 +983,17 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                                          out[5] + at});
                     at = span_end;
                 } else {
-                    const __m128 p0 = load3(positions[span->vertex[0]]), p1 = load3(positions[span->vertex[1]]),
-                                 p2 = load3(positions[span->vertex[2]]);
-                    const __m128 n0 = load3(normals[span->vertex[0]]), n1 = load3(normals[span->vertex[1]]),
-                                 n2 = load3(normals[span->vertex[2]]);
+                    const __m128 p0 = load3(&positions[span->vertex[0]].x),
+                                 p1 = load3(&positions[span->vertex[1]].x),
+                                 p2 = load3(&positions[span->vertex[2]].x);
+                    const __m128 n0 = load3(&normals[span->vertex[0]].x), n1 = load3(&normals[span->vertex[1]].x),
+                                 n2 = load3(&normals[span->vertex[2]].x);
                     // The triangle a few pixels on, fetched ahead (once a span).
                     if (at + 12 < end) __builtin_prefetch(visible[at + 12]);
                     do {
                         const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]), c = _mm_set1_ps(q2[at]);
-                        store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, p0), _mm_mul_ps(b, p1)), _mm_mul_ps(c, p2)),
-                              out[0] + at, out[1] + at, out[2] + at);
-                        store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, n0), _mm_mul_ps(b, n1)), _mm_mul_ps(c, n2)),
-                              out[3] + at, out[4] + at, out[5] + at);
+                        store3(mix3(a, b, c, p0, p1, p2), out[0] + at, out[1] + at, out[2] + at);
+                        store3(mix3(a, b, c, n0, n1, n2), out[3] + at, out[4] + at, out[5] + at);
                         ++at;
                     } while (at < end && visible[at] == span);
                 }
@@ -1014,10 +1023,6 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // pixel (a SIMD call across pixels would mostly pad), with x, y
             // and z in the lanes of one SSE vector: the same products and
             // sums, in the same order, as the scalar code and the kernel.
-            auto load3 = [](const float* v) {  // (v[0], v[1], v[2], 0), reading 3 floats
-                const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(v));
-                return _mm_movelh_ps(xy, _mm_load_ss(v + 2));
-            };
             __m128 corner_p[3], corner_n[3];
             for (int k = 0; k < 3; ++k) {
                 if (tri->clipped < 0) {
@@ -1029,28 +1034,19 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                     corner_n[k] = load3(&v[3]);
                 }
             }
-            auto store = [](__m128 v, float* x, float* y, float* z) {
-                _mm_store_ss(x, v);
-                _mm_store_ss(y, _mm_shuffle_ps(v, v, 1));
-                _mm_store_ss(z, _mm_movehl_ps(v, v));
-            };
             const bool faceted = object.shading == Shading::Faceted;
             for (std::size_t k = 0; k < count; ++k) {
                 const std::size_t at_x = static_cast<std::size_t>(x) + k;
                 const __m128 a = _mm_set1_ps(s.q0[at_x]), b = _mm_set1_ps(s.q1[at_x]),
                              c = _mm_set1_ps(s.q2[at_x]);
                 const std::size_t at = run_length + k;
-                store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_p[0]), _mm_mul_ps(b, corner_p[1])),
-                                 _mm_mul_ps(c, corner_p[2])),
-                      &s.px[at], &s.py[at], &s.pz[at]);
+                store3(mix3(a, b, c, corner_p[0], corner_p[1], corner_p[2]), &s.px[at], &s.py[at], &s.pz[at]);
                 if (faceted) {
                     // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
                     const glm::vec3& n = object.face_normals[tri->source];
                     s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
                 } else {
-                    store(_mm_add_ps(_mm_add_ps(_mm_mul_ps(a, corner_n[0]), _mm_mul_ps(b, corner_n[1])),
-                                     _mm_mul_ps(c, corner_n[2])),
-                          &s.nx[at], &s.ny[at], &s.nz[at]);
+                    store3(mix3(a, b, c, corner_n[0], corner_n[1], corner_n[2]), &s.nx[at], &s.ny[at], &s.nz[at]);
                 }
             }
         } else
