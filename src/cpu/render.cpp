@@ -329,6 +329,21 @@ inline void interpolate_surface(const PreparedObject& object, const ShadeTriangl
     if (object.shading == Shading::Faceted) n = object.face_normals[tri.source];
 }
 
+// A span's corners for the kernel set's interpolate: p and N of each, from
+// the mesh's vertices or the clipped piece's own.
+void span_corners(const PreparedObject& object, const ShadeTriangle& tri, float (&corner)[3][6]) {
+    for (int k = 0; k < 3; ++k) {
+        if (tri.clipped < 0) {
+            const glm::vec3& p = object.positions[tri.vertex[k]];
+            const glm::vec3& n = object.normals[tri.vertex[k]];
+            corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
+            corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
+        } else {
+            std::copy_n((*tri.varyings)[k].begin(), 6, corner[k]);
+        }
+    }
+}
+
 #if defined(__SSE2__)
 // The fragment stage's short spans, x, y and z in the lanes of one SSE
 // vector: (v[0], v[1], v[2], 0), reading 3 floats; the lanes to three
@@ -954,9 +969,8 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             if (run_length == 0) run_first = x;
             run_object = &object;
             const ShadeTriangle* const* visible = s.visible.data() + offset;
-            // Column x's place in the run's arrays is x − run_first.
-            float* const out[6] = {s.px.data() - run_first, s.py.data() - run_first, s.pz.data() - run_first,
-                                   s.nx.data() - run_first, s.ny.data() - run_first, s.nz.data() - run_first};
+            // The run's arrays; column at goes to place at − run_first.
+            float* const out[6] = {s.px.data(), s.py.data(), s.pz.data(), s.nx.data(), s.ny.data(), s.nz.data()};
             const float* const q0 = s.q0.data();
             const float* const q1 = s.q1.data();
             const float* const q2 = s.q2.data();
@@ -971,16 +985,12 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                     int span_end = at + 1;
                     while (span_end < end && visible[span_end] == span) ++span_end;
                     float corner[3][6];
-                    for (int k = 0; k < 3; ++k) {
-                        const glm::vec3& p = positions[span->vertex[k]];
-                        const glm::vec3& n = normals[span->vertex[k]];
-                        corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
-                        corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
-                    }
+                    span_corners(object, *span, corner);
+                    const int place = at - run_first;
                     kernels.interpolate(q0 + at, q1 + at, q2 + at, static_cast<std::size_t>(span_end - at),
                                         corner, nullptr,
-                                        {out[0] + at, out[1] + at, out[2] + at, out[3] + at, out[4] + at,
-                                         out[5] + at});
+                                        {out[0] + place, out[1] + place, out[2] + place, out[3] + place,
+                                         out[4] + place, out[5] + place});
                     at = span_end;
                 } else {
                     const __m128 p0 = load3(&positions[span->vertex[0]].x),
@@ -992,8 +1002,9 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                     if (at + 12 < end) __builtin_prefetch(visible[at + 12]);
                     do {
                         const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]), c = _mm_set1_ps(q2[at]);
-                        store3(mix3(a, b, c, p0, p1, p2), out[0] + at, out[1] + at, out[2] + at);
-                        store3(mix3(a, b, c, n0, n1, n2), out[3] + at, out[4] + at, out[5] + at);
+                        const int place = at - run_first;
+                        store3(mix3(a, b, c, p0, p1, p2), out[0] + place, out[1] + place, out[2] + place);
+                        store3(mix3(a, b, c, n0, n1, n2), out[3] + place, out[4] + place, out[5] + place);
                         ++at;
                     } while (at < end && visible[at] == span);
                 }
@@ -1064,16 +1075,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             }
         } else {
             float corner[3][6];
-            for (int k = 0; k < 3; ++k) {
-                if (tri->clipped < 0) {
-                    const glm::vec3& p = object.positions[tri->vertex[k]];
-                    const glm::vec3& n = object.normals[tri->vertex[k]];
-                    corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
-                    corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
-                } else {
-                    std::copy_n((*tri->varyings)[k].begin(), 6, corner[k]);
-                }
-            }
+            span_corners(object, *tri, corner);
             // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
             const float* face = object.shading == Shading::Faceted
                                     ? &object.face_normals[tri->source].x
