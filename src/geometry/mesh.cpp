@@ -40,19 +40,24 @@ constexpr double weld_fraction_of_diagonal = 1e-6;
 // exact at cell borders.
 constexpr double cells_per_weld_distance = 1024.0;
 
-// Cell coordinates are packed into one 64-bit key with as many bits per axis
-// as that axis needs: the largest coordinate is diagonal / (1024 × 1e-6 ×
-// diagonal) < 2^10, so the key has at most 30 bits (the clamp to 21 bits per
-// axis is only a guard). The cell size changes only the speed, never the
-// result: with 64 weld distances a 261k-triangle sphere needed three radix
-// passes more and five times as many neighbour lookups.
-constexpr int most_bits_per_cell_axis = 21;
-constexpr std::uint64_t largest_cell_coordinate = (std::uint64_t{1} << most_bits_per_cell_axis) - 1;
+// Cell coordinates are packed into one 32-bit key with as many bits per axis
+// as that axis needs: the largest coordinate is at most diagonal / (1024 ×
+// 1e-6 × diagonal) < 977 < 2^10, so the key has at most 30 bits (the clamp to
+// 10 bits per axis is only a guard). The cell size changes only the speed,
+// never the result: with 64 weld distances a 261k-triangle sphere needed
+// three radix passes more and five times as many neighbour lookups.
+constexpr int most_bits_per_cell_axis = 10;
+static_assert(1.0 / (weld_fraction_of_diagonal * cells_per_weld_distance) <
+                  double(1 << most_bits_per_cell_axis),
+              "a cell coordinate needs more bits than the key gives it");
+constexpr std::uint32_t largest_cell_coordinate = (std::uint32_t{1} << most_bits_per_cell_axis) - 1;
 
-// The points are sorted by cell with a least-significant-digit radix sort,
-// this many bits per pass (32768 buckets: a 256 KiB count table; two passes
-// for the largest key).
-constexpr int radix_bits = 15;
+// The points are sorted by cell with a least-significant-digit radix sort of
+// (cell, index) pairs, this many bits per pass (1024 buckets: a 4 KiB count
+// table, in the first level of cache; three passes for the largest key).
+// Sorting the 8-byte pairs and not the 20-byte points, with few buckets,
+// took the 261k-triangle sphere's sort from 3 ms to under 1.
+constexpr int radix_bits = 10;
 
 bool is_finite(const glm::vec3& point) {
     return std::isfinite(point.x) && std::isfinite(point.y) && std::isfinite(point.z);
@@ -89,9 +94,9 @@ class DisjointSets {
 };
 
 struct GridPoint {
-    std::uint64_t cell;
-    glm::vec3 position;
+    std::uint32_t cell;
     std::uint32_t index;  // into the mesh's positions
+    glm::vec3 position;
 };
 
 // std::floor, without a call into the maths library in the usual case
@@ -103,8 +108,8 @@ double floor_of(double v) {
                                                : std::floor(v);
 }
 
-std::uint64_t cell_of(const GridPoint& point) { return point.cell; }
-std::uint64_t cell_of(std::uint64_t cell) { return cell; }
+std::uint32_t cell_of(const GridPoint& point) { return point.cell; }
+std::uint32_t cell_of(std::uint32_t cell) { return cell; }
 
 // Within a cell, sorting by x, y, z orders the points by x for the sweep and
 // puts exact duplicates next to one another.
@@ -116,38 +121,44 @@ struct PositionOrder {
     }
 };
 
-// Stable sort by cell key, `key_bits` wide: O(n) per pass.
-void sort_by_cell(std::vector<GridPoint>& points, int key_bits) {
+// Sorts (cell << 32 | index) pairs by cell, `key_bits` wide: a stable sort by
+// cell, and as every pair is distinct, the pairs' own order. O(n) per pass.
+void sort_by_cell(std::vector<std::uint64_t>& pairs, int key_bits) {
     constexpr std::size_t bucket_count = std::size_t{1} << radix_bits;
     constexpr std::uint64_t digit_mask = bucket_count - 1;
     if (key_bits == 0) return;
     // A small mesh (a cube, a quad) costs a comparison sort less than
-    // clearing the count table twice.
-    if (points.size() < bucket_count / 4) {
-        std::stable_sort(points.begin(), points.end(),
-                         [](const GridPoint& a, const GridPoint& b) { return a.cell < b.cell; });
+    // clearing the count tables.
+    if (pairs.size() < bucket_count) {
+        std::sort(pairs.begin(), pairs.end());
         return;
     }
-    // Passes go back and forth between the points and a buffer that is
-    // written before it is read (not zero-filled first: 3 MB for a
-    // 261k-triangle sphere).
-    const std::size_t count = points.size();
+    const int passes = (key_bits + radix_bits - 1) / radix_bits;
+    // Every pass's counts in one read of the pairs.
+    std::vector<std::array<std::uint32_t, bucket_count>> bucket_start(
+        static_cast<std::size_t>(passes));
+    for (const std::uint64_t pair : pairs) {
+        for (int pass = 0; pass < passes; ++pass)
+            ++bucket_start[static_cast<std::size_t>(pass)]
+                          [((pair >> 32) >> (pass * radix_bits)) & digit_mask];
+    }
+    // Passes go back and forth between the pairs and a buffer that is
+    // written before it is read (not zero-filled first).
+    const std::size_t count = pairs.size();
     // (new T[n], not make_unique_for_overwrite, which the web build's
     // C++ library lacks: the same default-initialised array.)
-    const std::unique_ptr<GridPoint[]> buffer(new GridPoint[count]);
-    GridPoint* from = points.data();
-    GridPoint* to = buffer.get();
-    std::vector<std::size_t> bucket_start(bucket_count);
-    for (int shift = 0; shift < key_bits; shift += radix_bits) {
-        std::fill(bucket_start.begin(), bucket_start.end(), std::size_t{0});
-        for (std::size_t i = 0; i < count; ++i) ++bucket_start[(from[i].cell >> shift) & digit_mask];
-        std::size_t start = 0;
-        for (std::size_t& bucket : bucket_start) start += std::exchange(bucket, start);
-        for (std::size_t i = 0; i < count; ++i)
-            to[bucket_start[(from[i].cell >> shift) & digit_mask]++] = from[i];
+    const std::unique_ptr<std::uint64_t[]> buffer(new std::uint64_t[count]);
+    std::uint64_t* from = pairs.data();
+    std::uint64_t* to = buffer.get();
+    for (int pass = 0; pass < passes; ++pass) {
+        auto& start = bucket_start[static_cast<std::size_t>(pass)];
+        std::uint32_t next = 0;
+        for (std::uint32_t& bucket : start) next += std::exchange(bucket, next);
+        const int shift = 32 + pass * radix_bits;
+        for (std::size_t i = 0; i < count; ++i) to[start[(from[i] >> shift) & digit_mask]++] = from[i];
         std::swap(from, to);
     }
-    if (from != points.data()) std::copy_n(from, count, points.data());
+    if (from != pairs.data()) std::copy_n(from, count, pairs.data());
 }
 
 double squared_distance(const glm::vec3& a, const glm::vec3& b) {
@@ -173,7 +184,7 @@ class WeldGrid {
             inverse_cell_size_ = 1.0 / cell_size_;
             for (int axis = 0; axis < 3; ++axis) {
                 bits_[axis] = std::bit_width(cell_coordinate(highest[axis], axis));
-                largest_[axis] = (std::uint64_t{1} << bits_[axis]) - 1;
+                largest_[axis] = (std::uint32_t{1} << bits_[axis]) - 1;
                 key_bits += bits_[axis];
             }
         }
@@ -183,11 +194,12 @@ class WeldGrid {
         // one) look into the neighbouring cells.
         const double margin = 2.0 / cells_per_weld_distance;
         near_face_.assign(positions.size(), 0);
-        points_.reserve(positions.size());
+        std::vector<std::uint64_t> pairs;  // cell << 32 | index
+        pairs.reserve(positions.size());
         for (std::size_t index = 0; index < positions.size(); ++index) {
             const glm::vec3& position = positions[index];
             if (!is_finite(position)) continue;  // a NaN would break the sort's ordering
-            std::uint64_t coordinate[3] = {0, 0, 0};
+            std::uint32_t coordinate[3] = {0, 0, 0};
             if (use_cells) {
                 for (int axis = 0; axis < 3; ++axis) {
                     const double place = cell_place(position[axis], axis);
@@ -197,10 +209,15 @@ class WeldGrid {
                     if (within < margin || within > 1.0 - margin) near_face_[index] = 1;
                 }
             }
-            points_.push_back({pack_cell(coordinate[0], coordinate[1], coordinate[2]), position,
-                               static_cast<std::uint32_t>(index)});
+            pairs.push_back(std::uint64_t{pack_cell(coordinate[0], coordinate[1], coordinate[2])} << 32 |
+                            index);
         }
-        sort_by_cell(points_, key_bits);
+        sort_by_cell(pairs, key_bits);
+        points_.resize(pairs.size());
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            const auto index = static_cast<std::uint32_t>(pairs[i]);
+            points_[i] = {static_cast<std::uint32_t>(pairs[i] >> 32), index, positions[index]};
+        }
         for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
             while (end < points_.size() && points_[end].cell == points_[begin].cell) ++end;
             std::sort(points_.begin() + static_cast<std::ptrdiff_t>(begin),
@@ -230,13 +247,13 @@ class WeldGrid {
         return end;
     }
 
-    std::uint64_t pack_cell(std::uint64_t x, std::uint64_t y, std::uint64_t z) const {
+    std::uint32_t pack_cell(std::uint32_t x, std::uint32_t y, std::uint32_t z) const {
         return (((x << bits_[1]) | y) << bits_[2]) | z;
     }
 
     // Clamped to the grid: a lookup beyond its last cell finds that cell,
     // whose points the distance test then rejects.
-    std::uint64_t cell_coordinate(double value, int axis) const {
+    std::uint32_t cell_coordinate(double value, int axis) const {
         return clamped_cell(std::floor(cell_place(value, axis)), axis);
     }
     // A multiplication, not a division: the same (monotonic) function
@@ -244,10 +261,10 @@ class WeldGrid {
     double cell_place(double value, int axis) const {
         return (value - origin_[axis]) * inverse_cell_size_;
     }
-    std::uint64_t clamped_cell(double cell, int axis) const {
+    std::uint32_t clamped_cell(double cell, int axis) const {
         if (!(cell > 0.0)) return 0;
         if (cell >= double(largest_[axis])) return largest_[axis];
-        return static_cast<std::uint64_t>(cell);
+        return static_cast<std::uint32_t>(cell);
     }
 
     // Exact duplicates (a cube's face corners, a sphere's pole) weld without
@@ -291,25 +308,25 @@ class WeldGrid {
     // from the point in the cell with the smaller key.
     void weld_with_neighbour_cells(std::size_t point, DisjointSets& sets) const {
         const GridPoint& here = points_[point];
-        std::uint64_t low[3];
-        std::uint64_t high[3];
+        std::uint32_t low[3];
+        std::uint32_t high[3];
         for (int axis = 0; axis < 3; ++axis) {
             low[axis] = cell_coordinate(double(here.position[axis]) - weld_distance_, axis);
             high[axis] = cell_coordinate(double(here.position[axis]) + weld_distance_, axis);
         }
         if (low[0] == high[0] && low[1] == high[1] && low[2] == high[2]) return;
 
-        for (std::uint64_t x = low[0]; x <= high[0]; ++x) {
-            for (std::uint64_t y = low[1]; y <= high[1]; ++y) {
-                for (std::uint64_t z = low[2]; z <= high[2]; ++z) {
-                    const std::uint64_t cell = pack_cell(x, y, z);
+        for (std::uint32_t x = low[0]; x <= high[0]; ++x) {
+            for (std::uint32_t y = low[1]; y <= high[1]; ++y) {
+                for (std::uint32_t z = low[2]; z <= high[2]; ++z) {
+                    const std::uint32_t cell = pack_cell(x, y, z);
                     if (cell > here.cell) weld_with_cell(here, cell, sets);
                 }
             }
         }
     }
 
-    void weld_with_cell(const GridPoint& here, std::uint64_t cell, DisjointSets& sets) const {
+    void weld_with_cell(const GridPoint& here, std::uint32_t cell, DisjointSets& sets) const {
         // The cell's points, found in points_ itself (sorted by cell): a
         // table of cells would be as large as the points, in fresh memory.
         const auto [begin, end] = std::equal_range(
@@ -331,7 +348,7 @@ class WeldGrid {
     double cell_size_ = 0.0;
     double inverse_cell_size_ = 0.0;
     std::array<int, 3> bits_{0, 0, 0};  // key bits per axis
-    std::array<std::uint64_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
+    std::array<std::uint32_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
                                           largest_cell_coordinate};
     std::vector<GridPoint> points_;
     std::vector<std::uint8_t> near_face_;  // per position index: near a face of its cell
