@@ -14,7 +14,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libtinyobjloader-dev
+  libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libisal-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxsimd-dev
   # litkit compare's labels (FreeType, DejaVu Sans) and litkit turntable's GIFs.
   # The litkit executable links these, libpng and zlib statically: their -dev

@@ -34,6 +34,8 @@ struct Image {
 /// time for size on rendered pictures (docs/performance.md).
 inline constexpr int default_png_compression = 1;
 /// The PNG file bytes of `image` (8-bit RGB), zlib `compression_level` 0–9.
+/// Level 1 is deflated by ISA-L where litkit was built with it (its bytes
+/// may then differ between CPUs, its pixels never), the others by zlib.
 std::string encode_png(const Image& image, int compression_level = default_png_compression);
 
 /// Writes `image` as a PNG, whole or not at all (write_file_atomically).
