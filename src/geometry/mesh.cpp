@@ -172,33 +172,41 @@ double squared_distance(const glm::vec3& a, const glm::vec3& b) {
 class WeldGrid {
   public:
     // `lowest` and `highest` bound the finite positions.
-    WeldGrid(const std::vector<glm::vec3>& positions, glm::dvec3 lowest, glm::dvec3 highest,
-             double weld_distance)
+    WeldGrid(glm::dvec3 lowest, glm::dvec3 highest, double weld_distance)
         : origin_(lowest), weld_distance_(weld_distance) {
         // Without a positive weld distance (all points equal, or an infinite
         // box) only exact duplicates weld: everything goes into cell 0.
-        const bool use_cells = weld_distance > 0.0 && std::isfinite(weld_distance);
-        int key_bits = 0;
-        if (use_cells) {
+        if (weld_distance > 0.0 && std::isfinite(weld_distance)) {
             cell_size_ = cells_per_weld_distance * weld_distance;
             inverse_cell_size_ = 1.0 / cell_size_;
             for (int axis = 0; axis < 3; ++axis) {
                 bits_[axis] = std::bit_width(cell_coordinate(highest[axis], axis));
                 largest_[axis] = (std::uint32_t{1} << bits_[axis]) - 1;
-                key_bits += bits_[axis];
+                key_bits_ += bits_[axis];
             }
         }
+    }
 
+    // Positions [begin, end) placed in their cells: pairs[i] = cell << 32 | i,
+    // or no_cell for a non-finite position (a NaN would break the sort's
+    // ordering); near_face[i] = 1 for those near a face of their cell.
+    // Returns whether every one was finite.
+    bool place(const std::vector<glm::vec3>& positions, std::size_t begin, std::size_t end,
+               std::uint64_t* pairs, std::uint8_t* near_face) const {
         // Most points lie well inside their cell: only those within two
         // weld distances of a face (twice, so that rounding can never hide
         // one) look into the neighbouring cells.
         const double margin = 2.0 / cells_per_weld_distance;
-        near_face_.assign(positions.size(), 0);
-        std::vector<std::uint64_t> pairs;  // cell << 32 | index
-        pairs.reserve(positions.size());
-        for (std::size_t index = 0; index < positions.size(); ++index) {
+        const bool use_cells = cell_size_ > 0.0;
+        bool all_finite = true;
+        for (std::size_t index = begin; index < end; ++index) {
             const glm::vec3& position = positions[index];
-            if (!is_finite(position)) continue;  // a NaN would break the sort's ordering
+            near_face[index] = 0;
+            if (!is_finite(position)) {
+                pairs[index] = no_cell;
+                all_finite = false;
+                continue;
+            }
             std::uint32_t coordinate[3] = {0, 0, 0};
             if (use_cells) {
                 for (int axis = 0; axis < 3; ++axis) {
@@ -206,47 +214,54 @@ class WeldGrid {
                     const double cell = floor_of(place);
                     coordinate[axis] = clamped_cell(cell, axis);
                     const double within = place - cell;  // 0 to 1 across the cell
-                    if (within < margin || within > 1.0 - margin) near_face_[index] = 1;
+                    if (within < margin || within > 1.0 - margin) near_face[index] = 1;
                 }
             }
-            pairs.push_back(std::uint64_t{pack_cell(coordinate[0], coordinate[1], coordinate[2])} << 32 |
-                            index);
+            pairs[index] = std::uint64_t{pack_cell(coordinate[0], coordinate[1], coordinate[2])} << 32 | index;
         }
-        sort_by_cell(pairs, key_bits);
-        points_.resize(pairs.size());
-        for (std::size_t i = 0; i < pairs.size(); ++i) {
-            const auto index = static_cast<std::uint32_t>(pairs[i]);
-            points_[i] = {static_cast<std::uint32_t>(pairs[i] >> 32), index, positions[index]};
-        }
-        for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
-            while (end < points_.size() && points_[end].cell == points_[begin].cell) ++end;
-            std::sort(points_.begin() + static_cast<std::ptrdiff_t>(begin),
-                      points_.begin() + static_cast<std::ptrdiff_t>(end), PositionOrder{});
-        }
+        return all_finite;
     }
+    static constexpr std::uint64_t no_cell = ~std::uint64_t{0};
 
-    // Unites, in `sets`, every pair of positions within the weld distance.
-    void weld(DisjointSets& sets) {
-        collapse_exact_duplicates(sets);
-        for (std::size_t begin = 0, end = 0; begin < points_.size(); begin = end) {
-            end = cell_end(begin);
-            for (std::size_t point = begin; point < end; ++point) {
-                weld_within_cell(point, end, sets);
-                if (cell_size_ > 0.0 && near_face_[points_[point].index])
-                    weld_with_neighbour_cells(point, sets);
+    // Unites, in `sets`, every pair of the placed positions (without the
+    // non-finite ones) within the weld distance. In one pass over the
+    // positions sorted by cell, each cell's points are made grid points in
+    // position order, its exact duplicates collapsed and its close points
+    // welded; then the points near a face of their cell look into the
+    // neighbouring cells (found in the grid points, sorted by cell). The
+    // sets' roots are their least index, whatever the order of the unions.
+    void weld(std::vector<std::uint64_t>& pairs, const std::vector<glm::vec3>& positions,
+              const std::vector<std::uint8_t>& near_face, DisjointSets& sets) {
+        constexpr std::size_t gather_ahead = 32;
+        sort_by_cell(pairs, key_bits_);
+        points_.clear();
+        points_.reserve(pairs.size());
+        std::vector<std::uint32_t> near_faces;  // places in points_
+        for (std::size_t begin = 0, end = 0; begin < pairs.size(); begin = end) {
+            const auto cell = static_cast<std::uint32_t>(pairs[begin] >> 32);
+            while (end < pairs.size() && static_cast<std::uint32_t>(pairs[end] >> 32) == cell) ++end;
+            const std::size_t first = points_.size();
+            for (std::size_t i = begin; i < end; ++i) {
+                // The positions are read in the cells' order, not theirs:
+                // fetched ahead, the reads overlap.
+                if (i + gather_ahead < pairs.size()) {
+                    const auto ahead = static_cast<std::uint32_t>(pairs[i + gather_ahead]);
+                    __builtin_prefetch(&positions[ahead]);
+                    __builtin_prefetch(&near_face[ahead]);
+                }
+                const auto index = static_cast<std::uint32_t>(pairs[i]);
+                points_.push_back({cell, index, positions[index]});
+            }
+            if (end - begin > 1) weld_within_cell(first, sets);
+            if (cell_size_ > 0.0) {
+                for (std::size_t point = first; point < points_.size(); ++point)
+                    if (near_face[points_[point].index]) near_faces.push_back(static_cast<std::uint32_t>(point));
             }
         }
+        for (const std::uint32_t point : near_faces) weld_with_neighbour_cells(point, sets);
     }
 
   private:
-    // The end of the cell whose points start at `begin` (points_ is sorted
-    // by cell).
-    std::size_t cell_end(std::size_t begin) const {
-        std::size_t end = begin + 1;
-        while (end < points_.size() && points_[end].cell == points_[begin].cell) ++end;
-        return end;
-    }
-
     std::uint32_t pack_cell(std::uint32_t x, std::uint32_t y, std::uint32_t z) const {
         return (((x << bits_[1]) | y) << bits_[2]) | z;
     }
@@ -267,39 +282,36 @@ class WeldGrid {
         return static_cast<std::uint32_t>(cell);
     }
 
-    // Exact duplicates (a cube's face corners, a sphere's pole) weld without
-    // distance tests; the rest of the search sees one point per position, so
-    // many copies of one position cost linear time, not quadratic.
-    void collapse_exact_duplicates(DisjointSets& sets) {
-        std::size_t distinct_count = 0;  // points_[0, distinct_count) are distinct
-        for (std::size_t i = 0; i < points_.size(); ++i) {
-            const GridPoint point = points_[i];
-            if (distinct_count > 0) {
-                const GridPoint& previous = points_[distinct_count - 1];
-                if (previous.cell == point.cell && previous.position == point.position) {
-                    sets.unite(previous.index, point.index);
-                    continue;
-                }
-            }
-            points_[distinct_count++] = point;
-        }
-        points_.resize(distinct_count);
-    }
-
     void weld_if_close(const GridPoint& a, const GridPoint& b, DisjointSets& sets) const {
         if (squared_distance(a.position, b.position) <= weld_distance_ * weld_distance_) {
             sets.unite(a.index, b.index);
         }
     }
 
-    // Points later in the same cell, while their x is within reach.
-    void weld_within_cell(std::size_t point, std::size_t cell_end, DisjointSets& sets) const {
-        const GridPoint& here = points_[point];
-        for (std::size_t other = point + 1; other < cell_end; ++other) {
-            if (double(points_[other].position.x) - double(here.position.x) > weld_distance_) {
-                break;
+    // The last cell's points, points_[first, end), put in position order
+    // (by x, then y, then z: exact duplicates side by side); its exact
+    // duplicates (a cube's face corners, a sphere's pole) weld without
+    // distance tests and leave one point per position, so that many copies
+    // of one position cost linear time, not quadratic; then each point welds
+    // with the later ones while their x is within reach.
+    void weld_within_cell(std::size_t first, DisjointSets& sets) {
+        std::sort(points_.begin() + static_cast<std::ptrdiff_t>(first), points_.end(), PositionOrder{});
+        std::size_t distinct = first + 1;  // points_[first, distinct) are distinct
+        for (std::size_t i = first + 1; i < points_.size(); ++i) {
+            const GridPoint point = points_[i];
+            if (points_[distinct - 1].position == point.position) {
+                sets.unite(points_[distinct - 1].index, point.index);
+                continue;
             }
-            weld_if_close(here, points_[other], sets);
+            points_[distinct++] = point;
+        }
+        points_.resize(distinct);
+        for (std::size_t point = first; point < distinct; ++point) {
+            const GridPoint& here = points_[point];
+            for (std::size_t other = point + 1; other < distinct; ++other) {
+                if (double(points_[other].position.x) - double(here.position.x) > weld_distance_) break;
+                weld_if_close(here, points_[other], sets);
+            }
         }
     }
 
@@ -348,35 +360,104 @@ class WeldGrid {
     double cell_size_ = 0.0;
     double inverse_cell_size_ = 0.0;
     std::array<int, 3> bits_{0, 0, 0};  // key bits per axis
+    int key_bits_ = 0;
     std::array<std::uint32_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
                                           largest_cell_coordinate};
     std::vector<GridPoint> points_;
-    std::vector<std::uint8_t> near_face_;  // per position index: near a face of its cell
+};
+
+// Welding (docs/spec.md §2, DD9) in steps, so that a caller with threads
+// can run the steps over positions in parts, on any threads, beside its own
+// work: bound(part) for every part, make_grid(), place(part) for every
+// part, then finish(). The parts split the positions only; the result is
+// the same whatever their number and order (weld() is the steps in order,
+// in one part).
+class Welding {
+  public:
+    Welding(const std::vector<glm::vec3>& positions, std::size_t parts)
+        : positions_(positions), parts_(parts), lowest_(parts), highest_(parts), all_finite_(parts) {}
+
+    std::size_t parts() const { return parts_; }
+
+    // The bounds of a part's finite positions (exact: min and max).
+    void bound(std::size_t part) {
+        glm::dvec3 lowest(std::numeric_limits<double>::infinity());
+        glm::dvec3 highest(-std::numeric_limits<double>::infinity());
+        const auto [begin, end] = range(part);
+        for (std::size_t i = begin; i < end; ++i) {
+            const glm::vec3& position = positions_[i];
+            if (!is_finite(position)) continue;
+            lowest = glm::min(lowest, glm::dvec3(position));
+            highest = glm::max(highest, glm::dvec3(position));
+        }
+        lowest_[part] = lowest;
+        highest_[part] = highest;
+    }
+
+    // The weld distance, a fraction of the bounding box's diagonal, and the
+    // grid of cells over the box.
+    void make_grid() {
+        glm::dvec3 lowest(std::numeric_limits<double>::infinity());
+        glm::dvec3 highest(-std::numeric_limits<double>::infinity());
+        for (std::size_t part = 0; part < parts_; ++part) {
+            lowest = glm::min(lowest, lowest_[part]);
+            highest = glm::max(highest, highest_[part]);
+        }
+        if (!(lowest.x <= highest.x)) return;  // no finite position: nothing welds
+        const double weld_distance = weld_fraction_of_diagonal * glm::length(highest - lowest);
+        grid_.emplace(lowest, highest, weld_distance);
+        pairs_.resize(positions_.size());
+        near_face_.resize(positions_.size());
+    }
+
+    void place(std::size_t part) {
+        if (!grid_) return;
+        const auto [begin, end] = range(part);
+        all_finite_[part] = grid_->place(positions_, begin, end, pairs_.data(), near_face_.data()) ? 1 : 0;
+    }
+
+    // For each position, the index of the first position of its welded
+    // vertex. Non-finite positions weld with nothing.
+    std::vector<std::uint32_t> finish() {
+        DisjointSets sets(positions_.size());
+        if (grid_) {
+            if (std::find(all_finite_.begin(), all_finite_.end(), 0) != all_finite_.end())
+                std::erase(pairs_, WeldGrid::no_cell);
+            grid_->weld(pairs_, positions_, near_face_, sets);
+            grid_.reset();
+            std::vector<std::uint64_t>().swap(pairs_);
+            std::vector<std::uint8_t>().swap(near_face_);
+        }
+        std::vector<std::uint32_t> vertex_of_position(positions_.size());
+        for (std::size_t index = 0; index < positions_.size(); ++index) {
+            vertex_of_position[index] = sets.find(static_cast<std::uint32_t>(index));
+        }
+        return vertex_of_position;
+    }
+
+  private:
+    std::pair<std::size_t, std::size_t> range(std::size_t part) const {
+        const std::size_t count = positions_.size();
+        return {count * part / parts_, count * (part + 1) / parts_};
+    }
+
+    const std::vector<glm::vec3>& positions_;
+    std::size_t parts_;
+    std::vector<glm::dvec3> lowest_, highest_;  // per part
+    std::vector<std::uint8_t> all_finite_;      // per part (not vector<bool>: parts write apart)
+    std::optional<WeldGrid> grid_;
+    std::vector<std::uint64_t> pairs_;  // per position: cell << 32 | index
+    std::vector<std::uint8_t> near_face_;
 };
 
 // For each position, the index of the first position of its welded vertex
 // (docs/spec.md §2, DD9). Non-finite positions weld with nothing.
 std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
-    glm::dvec3 lowest(std::numeric_limits<double>::infinity());
-    glm::dvec3 highest(-std::numeric_limits<double>::infinity());
-    for (const glm::vec3& position : positions) {
-        if (!is_finite(position)) continue;
-        lowest = glm::min(lowest, glm::dvec3(position));
-        highest = glm::max(highest, glm::dvec3(position));
-    }
-
-    DisjointSets sets(positions.size());
-    if (lowest.x <= highest.x) {  // at least one finite position
-        const double weld_distance = weld_fraction_of_diagonal * glm::length(highest - lowest);
-        WeldGrid grid(positions, lowest, highest, weld_distance);
-        grid.weld(sets);
-    }
-
-    std::vector<std::uint32_t> vertex_of_position(positions.size());
-    for (std::size_t index = 0; index < positions.size(); ++index) {
-        vertex_of_position[index] = sets.find(static_cast<std::uint32_t>(index));
-    }
-    return vertex_of_position;
+    Welding welding(positions, 1);
+    welding.bound(0);
+    welding.make_grid();
+    welding.place(0);
+    return welding.finish();
 }
 
 }  // namespace
@@ -523,7 +604,8 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
 
     // Summing the weighted normals and normalising gives the direction of
     // their weighted mean (DD9, docs/spec.md §9.2), whatever the count.
-    std::vector<glm::vec3> normal_sums(position_count, glm::vec3(0.0f));
+    // (Made once the welding is done, in memory it may have freed.)
+    std::vector<glm::vec3> normal_sums;
     std::vector<std::uint32_t> vertex_of_position;
     // With threads and a weighting of one vector a triangle (the same at
     // its three corners), the weights are computed beside the welding, and
@@ -533,12 +615,24 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
     if (parallel && (weighting == Normals::Mean || weighting == Normals::Area)) {
         std::vector<glm::vec3> weight(triangle_count);
         std::vector<std::uint8_t> takes_part(triangle_count);
-        run_parallel(parallel, 2, [&](std::size_t job) {
+        // The welding's steps over positions in halves, then the rest of it
+        // (sorting by cell and welding: one job) beside the triangles'
+        // weights in pieces, which the other threads share.
+        constexpr std::size_t halves = 2;
+        Welding welding(mesh.positions, halves);
+        run_parallel(parallel, halves, [&](std::size_t half) { welding.bound(half); });
+        welding.make_grid();
+        run_parallel(parallel, halves, [&](std::size_t half) { welding.place(half); });
+        constexpr std::size_t weight_piece = 16384;
+        const std::size_t pieces = (triangle_count + weight_piece - 1) / weight_piece;
+        run_parallel(parallel, 1 + pieces, [&](std::size_t job) {
             if (job == 0) {
-                vertex_of_position = weld(mesh.positions);
+                vertex_of_position = welding.finish();
                 return;
             }
-            for (std::size_t t = 0; t < triangle_count; ++t) {
+            const std::size_t begin = (job - 1) * weight_piece;
+            const std::size_t end = std::min(triangle_count, begin + weight_piece);
+            for (std::size_t t = begin; t < end; ++t) {
                 const auto& triangle = mesh.triangles[t];
                 glm::vec3 weights[3];
                 glm::vec3 unit_normal;
@@ -548,6 +642,7 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
                 weight[t] = weights[0];
             }
         });
+        normal_sums.assign(position_count, glm::vec3(0.0f));
         for (std::size_t t = 0; t < triangle_count; ++t) {
             const auto& triangle = mesh.triangles[t];
             const std::uint32_t vertex_a = vertex_of_position[triangle[0]];
@@ -562,6 +657,7 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
         }
     } else {
         vertex_of_position = weld(mesh.positions);
+        normal_sums.assign(position_count, glm::vec3(0.0f));
         for_each_weighted_triangle(
             mesh, weighting, vertex_of_position,
             [&](std::size_t t, const glm::vec3* weights, const glm::vec3&) {
