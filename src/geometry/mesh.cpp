@@ -23,6 +23,9 @@
 #include <string_view>
 #include <utility>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace litkit {
 
@@ -93,11 +96,10 @@ class DisjointSets {
     std::vector<std::uint32_t> parent_;
 };
 
-struct GridPoint {
-    std::uint32_t cell;
-    std::uint32_t index;  // into the mesh's positions
-    glm::vec3 position;
-};
+// A placed position: its cell << 32 | its index into the mesh's positions.
+using GridPoint = std::uint64_t;
+std::uint32_t cell_of(GridPoint point) { return static_cast<std::uint32_t>(point >> 32); }
+std::uint32_t index_of(GridPoint point) { return static_cast<std::uint32_t>(point); }
 
 // std::floor, without a call into the maths library in the usual case
 // (x86-64's baseline has no rounding instruction, and the grid takes three
@@ -108,18 +110,13 @@ double floor_of(double v) {
                                                : std::floor(v);
 }
 
-std::uint32_t cell_of(const GridPoint& point) { return point.cell; }
-std::uint32_t cell_of(std::uint32_t cell) { return cell; }
-
 // Within a cell, sorting by x, y, z orders the points by x for the sweep and
 // puts exact duplicates next to one another.
-struct PositionOrder {
-    bool operator()(const GridPoint& a, const GridPoint& b) const {
-        if (a.position.x != b.position.x) return a.position.x < b.position.x;
-        if (a.position.y != b.position.y) return a.position.y < b.position.y;
-        return a.position.z < b.position.z;
-    }
-};
+bool position_order(const glm::vec3& a, const glm::vec3& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+}
 
 // Sorts (cell << 32 | index) pairs by cell, `key_bits` wide: a stable sort by
 // cell, and as every pair is distinct, the pairs' own order. O(n) per pass.
@@ -225,40 +222,37 @@ class WeldGrid {
 
     // Unites, in `sets`, every pair of the placed positions (without the
     // non-finite ones) within the weld distance. In one pass over the
-    // positions sorted by cell, each cell's points are made grid points in
-    // position order, its exact duplicates collapsed and its close points
-    // welded; then the points near a face of their cell look into the
-    // neighbouring cells (found in the grid points, sorted by cell). The
-    // sets' roots are their least index, whatever the order of the unions.
-    void weld(std::vector<std::uint64_t>& pairs, const std::vector<glm::vec3>& positions,
+    // points sorted by cell, each cell of several points is put in position
+    // order, its exact duplicates collapsed and its close points welded, the
+    // points compacted as they go; then the points near a face of their
+    // cell look into the neighbouring cells (found by cell in the sorted
+    // points). Positions are read through the points' indices: most cells
+    // hold one point, and a point far from its cell's faces is never read.
+    // The sets' roots are their least index, whatever the order of the
+    // unions.
+    void weld(std::vector<GridPoint>& points, const std::vector<glm::vec3>& positions,
               const std::vector<std::uint8_t>& near_face, DisjointSets& sets) {
-        constexpr std::size_t gather_ahead = 32;
-        sort_by_cell(pairs, key_bits_);
-        points_.clear();
-        points_.reserve(pairs.size());
-        std::vector<std::uint32_t> near_faces;  // places in points_
-        for (std::size_t begin = 0, end = 0; begin < pairs.size(); begin = end) {
-            const auto cell = static_cast<std::uint32_t>(pairs[begin] >> 32);
-            while (end < pairs.size() && static_cast<std::uint32_t>(pairs[end] >> 32) == cell) ++end;
-            const std::size_t first = points_.size();
-            for (std::size_t i = begin; i < end; ++i) {
-                // The positions are read in the cells' order, not theirs:
-                // fetched ahead, the reads overlap.
-                if (i + gather_ahead < pairs.size()) {
-                    const auto ahead = static_cast<std::uint32_t>(pairs[i + gather_ahead]);
-                    __builtin_prefetch(&positions[ahead]);
-                    __builtin_prefetch(&near_face[ahead]);
-                }
-                const auto index = static_cast<std::uint32_t>(pairs[i]);
-                points_.push_back({cell, index, positions[index]});
+        sort_by_cell(points, key_bits_);
+        positions_ = &positions;
+        std::vector<std::uint32_t> near_faces;  // places in `points`, once compacted
+        std::size_t kept = 0;                   // points[0, kept): compacted
+        for (std::size_t begin = 0, end = 0; begin < points.size(); begin = end) {
+            const std::uint32_t cell = cell_of(points[begin]);
+            while (end < points.size() && cell_of(points[end]) == cell) ++end;
+            const std::size_t first = kept;
+            if (end - begin == 1) {
+                points[kept++] = points[begin];
+            } else {
+                kept = weld_within_cell(points, begin, end, kept, sets);
             }
-            if (end - begin > 1) weld_within_cell(first, sets);
             if (cell_size_ > 0.0) {
-                for (std::size_t point = first; point < points_.size(); ++point)
-                    if (near_face[points_[point].index]) near_faces.push_back(static_cast<std::uint32_t>(point));
+                for (std::size_t point = first; point < kept; ++point)
+                    if (near_face[index_of(points[point])]) near_faces.push_back(static_cast<std::uint32_t>(point));
             }
         }
-        for (const std::uint32_t point : near_faces) weld_with_neighbour_cells(point, sets);
+        points.resize(kept);
+        for (const std::uint32_t point : near_faces) weld_with_neighbour_cells(points, point, sets);
+        positions_ = nullptr;
     }
 
   private:
@@ -282,49 +276,59 @@ class WeldGrid {
         return static_cast<std::uint32_t>(cell);
     }
 
-    void weld_if_close(const GridPoint& a, const GridPoint& b, DisjointSets& sets) const {
-        if (squared_distance(a.position, b.position) <= weld_distance_ * weld_distance_) {
-            sets.unite(a.index, b.index);
+    const glm::vec3& position_of(GridPoint point) const { return (*positions_)[index_of(point)]; }
+
+    void weld_if_close(GridPoint a, GridPoint b, DisjointSets& sets) const {
+        if (squared_distance(position_of(a), position_of(b)) <= weld_distance_ * weld_distance_) {
+            sets.unite(index_of(a), index_of(b));
         }
     }
 
-    // The last cell's points, points_[first, end), put in position order
-    // (by x, then y, then z: exact duplicates side by side); its exact
-    // duplicates (a cube's face corners, a sphere's pole) weld without
-    // distance tests and leave one point per position, so that many copies
-    // of one position cost linear time, not quadratic; then each point welds
-    // with the later ones while their x is within reach.
-    void weld_within_cell(std::size_t first, DisjointSets& sets) {
-        std::sort(points_.begin() + static_cast<std::ptrdiff_t>(first), points_.end(), PositionOrder{});
-        std::size_t distinct = first + 1;  // points_[first, distinct) are distinct
-        for (std::size_t i = first + 1; i < points_.size(); ++i) {
-            const GridPoint point = points_[i];
-            if (points_[distinct - 1].position == point.position) {
-                sets.unite(points_[distinct - 1].index, point.index);
+    // One cell's points, points[begin, end), put in position order (by x,
+    // then y, then z: exact duplicates side by side) and moved to
+    // points[kept, ...); its exact duplicates (a cube's face corners, a
+    // sphere's pole) weld without distance tests and leave one point per
+    // position, so that many copies of one position cost linear time, not
+    // quadratic; then each point welds with the later ones while their x is
+    // within reach. Returns the new end of the compacted points.
+    std::size_t weld_within_cell(std::vector<GridPoint>& points, std::size_t begin, std::size_t end,
+                                 std::size_t kept, DisjointSets& sets) const {
+        const auto from = points.begin() + static_cast<std::ptrdiff_t>(begin);
+        std::sort(from, points.begin() + static_cast<std::ptrdiff_t>(end), [this](GridPoint a, GridPoint b) {
+            return position_order(position_of(a), position_of(b));
+        });
+        const std::size_t first = kept;
+        points[kept++] = points[begin];
+        for (std::size_t i = begin + 1; i < end; ++i) {
+            const GridPoint point = points[i];
+            if (position_of(points[kept - 1]) == position_of(point)) {
+                sets.unite(index_of(points[kept - 1]), index_of(point));
                 continue;
             }
-            points_[distinct++] = point;
+            points[kept++] = point;
         }
-        points_.resize(distinct);
-        for (std::size_t point = first; point < distinct; ++point) {
-            const GridPoint& here = points_[point];
-            for (std::size_t other = point + 1; other < distinct; ++other) {
-                if (double(points_[other].position.x) - double(here.position.x) > weld_distance_) break;
-                weld_if_close(here, points_[other], sets);
+        for (std::size_t point = first; point < kept; ++point) {
+            const double here_x = position_of(points[point]).x;
+            for (std::size_t other = point + 1; other < kept; ++other) {
+                if (double(position_of(points[other]).x) - here_x > weld_distance_) break;
+                weld_if_close(points[point], points[other], sets);
             }
         }
+        return kept;
     }
 
     // Neighbouring cells that the box of half-width weld_distance around the
     // point reaches. Each pair of points in different cells is tested once,
     // from the point in the cell with the smaller key.
-    void weld_with_neighbour_cells(std::size_t point, DisjointSets& sets) const {
-        const GridPoint& here = points_[point];
+    void weld_with_neighbour_cells(const std::vector<GridPoint>& points, std::size_t point,
+                                   DisjointSets& sets) const {
+        const GridPoint here = points[point];
+        const glm::vec3& position = position_of(here);
         std::uint32_t low[3];
         std::uint32_t high[3];
         for (int axis = 0; axis < 3; ++axis) {
-            low[axis] = cell_coordinate(double(here.position[axis]) - weld_distance_, axis);
-            high[axis] = cell_coordinate(double(here.position[axis]) + weld_distance_, axis);
+            low[axis] = cell_coordinate(double(position[axis]) - weld_distance_, axis);
+            high[axis] = cell_coordinate(double(position[axis]) + weld_distance_, axis);
         }
         if (low[0] == high[0] && low[1] == high[1] && low[2] == high[2]) return;
 
@@ -332,25 +336,29 @@ class WeldGrid {
             for (std::uint32_t y = low[1]; y <= high[1]; ++y) {
                 for (std::uint32_t z = low[2]; z <= high[2]; ++z) {
                     const std::uint32_t cell = pack_cell(x, y, z);
-                    if (cell > here.cell) weld_with_cell(here, cell, sets);
+                    if (cell > cell_of(here)) weld_with_cell(points, here, cell, sets);
                 }
             }
         }
     }
 
-    void weld_with_cell(const GridPoint& here, std::uint32_t cell, DisjointSets& sets) const {
-        // The cell's points, found in points_ itself (sorted by cell): a
-        // table of cells would be as large as the points, in fresh memory.
-        const auto [begin, end] = std::equal_range(
-            points_.begin(), points_.end(), cell,
-            [](const auto& a, const auto& b) { return cell_of(a) < cell_of(b); });
+    void weld_with_cell(const std::vector<GridPoint>& points, GridPoint here, std::uint32_t cell,
+                        DisjointSets& sets) const {
+        // The cell's points, found in the points themselves (sorted by
+        // cell): a table of cells would be as large as the points, in fresh
+        // memory.
+        const auto begin = std::lower_bound(points.begin(), points.end(), cell,
+                                            [](GridPoint p, std::uint32_t c) { return cell_of(p) < c; });
+        const auto end = std::upper_bound(begin, points.end(), cell,
+                                          [](std::uint32_t c, GridPoint p) { return c < cell_of(p); });
         if (begin == end) return;
-        const double lowest_x = double(here.position.x) - weld_distance_;
-        auto other = std::lower_bound(begin, end, lowest_x, [](const GridPoint& p, double x) {
-            return double(p.position.x) < x;
+        const double here_x = position_of(here).x;
+        const double lowest_x = here_x - weld_distance_;
+        auto other = std::lower_bound(begin, end, lowest_x, [this](GridPoint p, double x) {
+            return double(position_of(p).x) < x;
         });
         for (; other != end; ++other) {
-            if (double(other->position.x) - double(here.position.x) > weld_distance_) break;
+            if (double(position_of(*other).x) - here_x > weld_distance_) break;
             weld_if_close(here, *other, sets);
         }
     }
@@ -363,7 +371,7 @@ class WeldGrid {
     int key_bits_ = 0;
     std::array<std::uint32_t, 3> largest_{largest_cell_coordinate, largest_cell_coordinate,
                                           largest_cell_coordinate};
-    std::vector<GridPoint> points_;
+    const std::vector<glm::vec3>* positions_ = nullptr;  // while welding
 };
 
 // Welding (docs/spec.md §2, DD9) in steps, so that a caller with threads
@@ -474,6 +482,52 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 }
 
 namespace {
+
+// face_normal of triangles[t] and, where there is one, triangles[t + 1]:
+// with SSE2, the two in the lanes of its double vectors, the very
+// operations of face_normal (glm's cross, its dot (x·x + y·y) + z·z, the
+// square root, three divisions), so the very bits; about twice as fast
+// (its square root and divisions take as long for two lanes as for one).
+// Returns how many it made (1 or 2).
+std::size_t face_normals_from(const Mesh& mesh, std::size_t t, std::size_t end, glm::vec3* out) {
+#if defined(__SSE2__)
+    if (t + 1 < end) {
+        const auto& p = mesh.positions;
+        const auto& first = mesh.triangles[t];
+        const auto& second = mesh.triangles[t + 1];
+        auto lanes = [&](int corner, int axis) {
+            return _mm_set_pd(double(p[second[corner]][axis]), double(p[first[corner]][axis]));
+        };
+        __m128d e1[3], e2[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            const __m128d a = lanes(0, axis);
+            e1[axis] = _mm_sub_pd(lanes(1, axis), a);
+            e2[axis] = _mm_sub_pd(lanes(2, axis), a);
+        }
+        const __m128d cross[3] = {
+            _mm_sub_pd(_mm_mul_pd(e1[1], e2[2]), _mm_mul_pd(e2[1], e1[2])),
+            _mm_sub_pd(_mm_mul_pd(e1[2], e2[0]), _mm_mul_pd(e2[2], e1[0])),
+            _mm_sub_pd(_mm_mul_pd(e1[0], e2[1]), _mm_mul_pd(e2[0], e1[1]))};
+        const __m128d length = _mm_sqrt_pd(_mm_add_pd(
+            _mm_add_pd(_mm_mul_pd(cross[0], cross[0]), _mm_mul_pd(cross[1], cross[1])),
+            _mm_mul_pd(cross[2], cross[2])));
+        alignas(16) double unit[3][2], lengths[2];
+        for (int axis = 0; axis < 3; ++axis) _mm_store_pd(unit[axis], _mm_div_pd(cross[axis], length));
+        _mm_store_pd(lengths, length);
+        for (int lane = 0; lane < 2; ++lane) {
+            out[lane] = !(lengths[lane] > 0.0) || !std::isfinite(lengths[lane])
+                            ? glm::vec3(0.0f)
+                            : glm::vec3(float(unit[0][lane]), float(unit[1][lane]), float(unit[2][lane]));
+        }
+        return 2;
+    }
+#endif
+    (void)end;
+    const auto& triangle = mesh.triangles[t];
+    out[0] = face_normal(mesh.positions[triangle[0]], mesh.positions[triangle[1]],
+                         mesh.positions[triangle[2]]);
+    return 1;
+}
 
 void check_triangle_indices(const Mesh& mesh, const char* function) {
     const std::size_t position_count = mesh.positions.size();
@@ -632,6 +686,18 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
             }
             const std::size_t begin = (job - 1) * weight_piece;
             const std::size_t end = std::min(triangle_count, begin + weight_piece);
+            if (weighting == Normals::Mean) {
+                // triangle_weights' Mean: the DD8 normal at every corner.
+                for (std::size_t t = begin; t < end;) {
+                    glm::vec3 normal[2];
+                    const std::size_t made = face_normals_from(mesh, t, end, normal);
+                    for (std::size_t k = 0; k < made; ++k, ++t) {
+                        weight[t] = normal[k];
+                        takes_part[t] = normal[k] != glm::vec3(0.0f);
+                    }
+                }
+                return;
+            }
             for (std::size_t t = begin; t < end; ++t) {
                 const auto& triangle = mesh.triangles[t];
                 glm::vec3 weights[3];
