@@ -116,8 +116,9 @@ void BM_FrameSphere65kTriangles640x480(benchmark::State& state) {
     frame(state, litkit::SphereShape{1.0f, 256, 128}, 640, 480);
 }
 
-// PNG encoding of the default scene at 800×600 per zlib level: time, and
-// the file size as a counter (the choice of level in image.cpp).
+// PNG encoding of the default scene at 800×600 per level (1: ISA-L where
+// the build has it; the others zlib): time, and the file size as a counter
+// (the choice of level and deflater in image.cpp).
 void BM_EncodeDefaultScenePng(benchmark::State& state) {
     const litkit::Image image = litkit::render(litkit::default_scene(), {.threads = 1});
     std::size_t bytes = 0;

@@ -2,12 +2,13 @@
 # Set-up time of the 261k-triangle sphere (meshes, normals, world space: the
 # `setup:` line of `litkit bench`), fresh processes, for each normals option,
 # interleaved between two litkit binaries (issues 12 and 16):
-#   bench/setup.sh OLD_LITKIT NEW_LITKIT [ROUNDS]
+#   bench/setup.sh OLD_LITKIT NEW_LITKIT [ROUNDS] [THREADS]
 # Prints per option the median over rounds for each binary, and what each
-# option adds to `mean` (the default). One thread; one frame after set-up.
+# option adds to `mean` (the default). THREADS threads (1 unless given; the
+# renderer lends them to mesh building); one frame after set-up.
 # Timing only: nothing here passes or fails.
 set -euo pipefail
-old=$1 new=$2 rounds=${3:-7}
+old=$1 new=$2 rounds=${3:-7} threads=${4:-1}
 scene="$(cd "$(dirname "$0")" && pwd)/scenes/sphere-261k.toml"
 options=("" "--normals area" "--normals angle" "--normals max" "--crease-angle 60"
          "--normals angle --crease-angle 60")
@@ -16,7 +17,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 echo "load: $(uptime)"
 setup_ms() {  # binary option-index
     # shellcheck disable=SC2086
-    "$1" bench "$scene" --frames 1 --threads 1 ${options[$2]} |
+    "$1" bench "$scene" --frames 1 --threads "$threads" ${options[$2]} |
         sed -n 's/^setup: \([0-9.]*\) ms.*/\1/p'
 }
 for ((r = 0; r < rounds; r++)); do
