@@ -39,10 +39,10 @@ namespace {
 // machine; ISA-L picks its code for the CPU at run time, so its bytes may
 // differ between machines, never the pixels they decode to.
 constexpr std::size_t split_from_bytes = std::size_t{512} << 10;
-// With zlib, each half is deflated as a run of raw deflate streams of whole rows, at
-// most this many filtered bytes each (or one row, if longer), each ended
-// on a byte boundary (a sync flush) and the next begun afresh
-// (deflateReset). zlib slides its window once a stream has taken 65,274
+// With zlib, each half is deflated as a run of raw deflate streams of
+// whole rows, at most this many filtered bytes each (or one row, if
+// longer), each ended on a byte boundary (a sync flush) and the next begun
+// afresh (deflateReset). zlib slides its window once a stream has taken 65,274
 // bytes, and every 32 KiB after: it moves the window and rewrites its two
 // 64 KiB hash tables, which its run-length strategy never reads. That was a
 // third of the time (docs/performance.md, "Session 8": the default scene

@@ -385,8 +385,6 @@ class Welding {
     Welding(const std::vector<glm::vec3>& positions, std::size_t parts)
         : positions_(positions), parts_(parts), lowest_(parts), highest_(parts), all_finite_(parts) {}
 
-    std::size_t parts() const { return parts_; }
-
     // The bounds of a part's finite positions (exact: min and max).
     void bound(std::size_t part) {
         glm::dvec3 lowest(std::numeric_limits<double>::infinity());
