@@ -14,7 +14,10 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libisal-dev libtinyobjloader-dev
+  libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libtinyobjloader-dev
+  # PNG's default level deflated by ISA-L (src/core/image.cpp; a shared
+  # library: Debian has no archive of it).
+  libisal-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxsimd-dev
   # litkit compare's labels (FreeType, DejaVu Sans) and litkit turntable's GIFs.
   # The litkit executable links these, libpng and zlib statically: their -dev
