@@ -153,10 +153,13 @@ using CornerVaryings = std::array<std::array<float, max_varyings>, 3>;
 // (the mesh's vertices, or a clipped polygon's own).
 struct ShadeTriangle {
     std::uint32_t object;
-    std::uint32_t source;                   // triangle index within the object
-    std::array<std::uint32_t, 3> vertex;    // mesh vertices, corner by corner
-    std::int32_t clipped;                   // index into SetupChunk::clipped, or −1
-    const CornerVaryings* varyings;         // &SetupChunk::clipped[clipped], or null
+    std::uint32_t source;  // triangle index within the object
+    // The mesh's vertices, corner by corner; for a piece of a clipped
+    // triangle, {its place in its chunk's `clipped`, the chunk, clipped_piece}
+    // (no vertex has that index: 32-bit indices reach one fewer vertex).
+    std::array<std::uint32_t, 3> vertex;
+    static constexpr std::uint32_t clipped_piece = ~std::uint32_t{0};
+    bool clipped() const { return vertex[2] == clipped_piece; }
 };
 
 // What the visibility pass needs: fixed-point window coordinates and the
@@ -166,20 +169,25 @@ struct ShadeTriangle {
 struct RasterTriangle {
     std::array<std::int32_t, 3> x, y;
     std::array<float, 3> weight;  // 1/w of each corner over the doubled area
-    std::int16_t min_x, max_x, min_y, max_y;
+    std::int16_t min_x, max_x, min_y;
+    std::uint16_t max_y_small;  // max_y (≤ 16384) and, in the top bit, small()
+    int max_y() const { return max_y_small & 0x7fff; }
     // At most small_triangle (in fixed point) wide and high: its edge
     // functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its box).
-    bool small;
+    bool small() const { return (max_y_small >> 15) != 0; }
 };
 
 // A triangle ready to rasterize, as binned: setup copies it into every band
 // it may touch, so that a band's triangles are read in one stream, and the
 // visibility buffer points at the copy's ShadeTriangle, read again (from
 // cache, not memory) when the band is shaded.
-struct BinnedTriangle {
+struct alignas(64) BinnedTriangle {
     RasterTriangle raster;
     ShadeTriangle shade;
 };
+// One cache line each: the visibility pass reads the raster part, the
+// fragment stage the shade part, of the same line.
+static_assert(sizeof(BinnedTriangle) == 64);
 
 // One setup job's output, kept between frames to reuse its memory.
 struct SetupChunk {
@@ -305,21 +313,27 @@ struct Renderer::Impl {
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
+    // A clipped piece's corners (ShadeTriangle::vertex says where), or null.
+    const CornerVaryings* varyings_of(const ShadeTriangle& tri) const {
+        return tri.clipped() ? &chunks[tri.vertex[1]].clipped[tri.vertex[0]] : nullptr;
+    }
 };
 
 namespace {
 
 // Phong shading's varyings at a pixel: p and N mixed from the corners (the
 // mesh's, or a clipped piece's) with the perspective-correct weights.
-inline void interpolate_surface(const PreparedObject& object, const ShadeTriangle& tri, float q0,
-                                float q1, float q2, glm::vec3& p, glm::vec3& n) {
-    if (tri.clipped < 0) {
+// `varyings`: the clipped piece's corners (Impl::varyings_of), or null.
+inline void interpolate_surface(const PreparedObject& object, const ShadeTriangle& tri,
+                                const CornerVaryings* varyings, float q0, float q1, float q2,
+                                glm::vec3& p, glm::vec3& n) {
+    if (!varyings) {
         p = q0 * object.positions[tri.vertex[0]] + q1 * object.positions[tri.vertex[1]] +
             q2 * object.positions[tri.vertex[2]];
         n = q0 * object.normals[tri.vertex[0]] + q1 * object.normals[tri.vertex[1]] +
             q2 * object.normals[tri.vertex[2]];
     } else {
-        const CornerVaryings& v = *tri.varyings;
+        const CornerVaryings& v = *varyings;
         auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
         p = {mix(0), mix(1), mix(2)};
         n = {mix(3), mix(4), mix(5)};
@@ -331,15 +345,16 @@ inline void interpolate_surface(const PreparedObject& object, const ShadeTriangl
 
 // A span's corners for the kernel set's interpolate: p and N of each, from
 // the mesh's vertices or the clipped piece's own.
-void span_corners(const PreparedObject& object, const ShadeTriangle& tri, float (&corner)[3][6]) {
+void span_corners(const PreparedObject& object, const ShadeTriangle& tri, const CornerVaryings* varyings,
+                  float (&corner)[3][6]) {
     for (int k = 0; k < 3; ++k) {
-        if (tri.clipped < 0) {
+        if (!varyings) {
             const glm::vec3& p = object.positions[tri.vertex[k]];
             const glm::vec3& n = object.normals[tri.vertex[k]];
             corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
             corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
         } else {
-            std::copy_n((*tri.varyings)[k].begin(), 6, corner[k]);
+            std::copy_n((*varyings)[k].begin(), 6, corner[k]);
         }
     }
 }
@@ -375,10 +390,17 @@ void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) co
     probed.hit = true;
     probed.object = tri->object;
     probed.triangle = tri->source;
-    probed.vertices = tri->vertex;
-    probed.clipped = tri->clipped >= 0;
+    probed.clipped = tri->clipped();
+    if (probed.clipped) {
+        // Its vertices in the rasterizer's corner order, as setup puts them.
+        const auto& v = objects[tri->object].triangles[tri->source];
+        probed.vertices = {v[0], v[2], v[1]};
+    } else {
+        probed.vertices = tri->vertex;
+    }
     probed.weights = {q0, q1, q2};
-    interpolate_surface(objects[tri->object], *tri, q0, q1, q2, probed.position, probed.normal);
+    interpolate_surface(objects[tri->object], *tri, varyings_of(*tri), q0, q1, q2, probed.position,
+                        probed.normal);
     probed.intensity = {s.r[static_cast<std::size_t>(x)], s.g[static_cast<std::size_t>(x)],
                         s.b[static_cast<std::size_t>(x)]};
 }
@@ -549,9 +571,9 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         raster.min_x = static_cast<std::int16_t>(left);
         raster.max_x = static_cast<std::int16_t>(right);
         raster.min_y = static_cast<std::int16_t>(top);
-        raster.max_y = static_cast<std::int16_t>(bottom);
-        raster.small = std::int64_t{max_x} - min_x <= small_triangle &&
-                       std::int64_t{max_y} - min_y <= small_triangle;
+        const bool small = std::int64_t{max_x} - min_x <= small_triangle &&
+                           std::int64_t{max_y} - min_y <= small_triangle;
+        raster.max_y_small = static_cast<std::uint16_t>(bottom | (small ? 0x8000 : 0));
         if (object.shading == Shading::Flat && !flat_done) {
             // docs/spec.md §3 flat: lit once, at the centroid of the whole (unclipped)
             // triangle, with its face normal.
@@ -567,10 +589,9 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         shade.object = chunk.object;
         shade.source = source;
         shade.vertex = {vertex[0], vertex[2], vertex[1]};
-        shade.clipped = -1;
-        shade.varyings = nullptr;
         if (varyings) {
-            shade.clipped = static_cast<std::int32_t>(chunk.clipped.size());
+            shade.vertex = {static_cast<std::uint32_t>(chunk.clipped.size()),
+                            static_cast<std::uint32_t>(&chunk - chunks.data()), ShadeTriangle::clipped_piece};
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
         pending.push_back({raster, shade});
@@ -639,14 +660,6 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         }
     }
 
-    // The clipped pieces' varyings stay put from here on: link them.
-    if (!chunk.clipped.empty()) {
-        for (BinnedTriangle& binned : pending) {
-            ShadeTriangle& tri = binned.shade;
-            tri.varyings = tri.clipped < 0 ? nullptr : &chunk.clipped[static_cast<std::size_t>(tri.clipped)];
-        }
-    }
-
     // Binning: each band of rows gets a copy of the triangles that may touch
     // it, in setup order (counted as they were made, so the chunk's one
     // array is sized exactly).
@@ -659,7 +672,7 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
     chunk.binned.resize(chunk.band_start[bands]);
     for (const BinnedTriangle& binned : pending) {
         const RasterTriangle& tri = binned.raster;
-        for (int b = tri.min_y / band_height; b <= tri.max_y / band_height; ++b)
+        for (int b = tri.min_y / band_height; b <= tri.max_y() / band_height; ++b)
             chunk.binned[counts[b]++] = binned;
     }
 }
@@ -689,7 +702,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const RasterTriangle& tri = t->raster;
             const ShadeTriangle* const shade = &t->shade;
             const int y0 = std::max<int>(tri.min_y, row_begin);
-            const int y1 = std::min<int>(tri.max_y, row_end - 1);
+            const int y1 = std::min<int>(tri.max_y(), row_end - 1);
             if (y0 > y1) continue;
 
             // Edge k is opposite corner k: from corner k+1 to corner k+2.
@@ -714,7 +727,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const float weight1 = tri.weight[1];
             const float weight2 = tri.weight[2];
 
-            if (tri.small && kernels.visibility_small) {
+            if (tri.small() && kernels.visibility_small) {
                 // The same pixels and values as below, a row at a time in the
                 // kernel set's lanes.
                 kernels::SmallTriangle small;
@@ -737,7 +750,7 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
                 continue;
             }
 #if defined(__SSE2__)
-            if (tri.small) {
+            if (tri.small()) {
                 // The same pixels and values as below, with the three edge
                 // functions in the lanes of one 32-bit vector (exact: they
                 // stay far inside 32 bits for a small triangle, and a float
@@ -944,12 +957,12 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
             const float q0 = s.q0[x], q1 = s.q1[x], q2 = s.q2[x];
             glm::vec3 c;
-            if (tri->clipped < 0) {
+            if (!tri->clipped()) {
                 const auto& colors = vertex_colors[tri->object];
                 c = q0 * colors[tri->vertex[0]] + q1 * colors[tri->vertex[1]] +
                     q2 * colors[tri->vertex[2]];
             } else {
-                const CornerVaryings& v = *tri->varyings;
+                const CornerVaryings& v = *varyings_of(*tri);
                 c = {q0 * v[0][0] + q1 * v[1][0] + q2 * v[2][0],
                      q0 * v[0][1] + q1 * v[1][1] + q2 * v[2][1],
                      q0 * v[0][2] + q1 * v[1][2] + q2 * v[2][2]};
@@ -958,7 +971,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             continue;
         }
 #if defined(__SSE2__)
-        if (object.shading == Shading::Phong && tri->clipped < 0) {
+        if (object.shading == Shading::Phong && !tri->clipped()) {
             // Phong, the mesh's own corners: this pixel's span and those
             // after it whose triangles are too, of this object, in one loop
             // (a dense mesh's spans are one to three pixels: the checks and
@@ -985,7 +998,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                     int span_end = at + 1;
                     while (span_end < end && visible[span_end] == span) ++span_end;
                     float corner[3][6];
-                    span_corners(object, *span, corner);
+                    span_corners(object, *span, nullptr, corner);
                     const int place = at - run_first;
                     kernels.interpolate(q0 + at, q1 + at, q2 + at, static_cast<std::size_t>(span_end - at),
                                         corner, nullptr,
@@ -1010,7 +1023,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                 }
                 if (at >= end) break;
                 const ShadeTriangle* const next = visible[at];
-                if (!next || next->object != object_index || next->clipped >= 0) break;
+                if (!next || next->object != object_index || next->clipped()) break;
                 span = next;
             }
             run_length += static_cast<std::size_t>(at - x);
@@ -1035,12 +1048,13 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // and z in the lanes of one SSE vector: the same products and
             // sums, in the same order, as the scalar code and the kernel.
             __m128 corner_p[3], corner_n[3];
+            const CornerVaryings* const varyings = varyings_of(*tri);
             for (int k = 0; k < 3; ++k) {
-                if (tri->clipped < 0) {
+                if (!varyings) {
                     corner_p[k] = load3(&object.positions[tri->vertex[k]].x);
                     corner_n[k] = load3(&object.normals[tri->vertex[k]].x);
                 } else {
-                    const auto& v = (*tri->varyings)[k];
+                    const auto& v = (*varyings)[k];
                     corner_p[k] = load3(&v[0]);
                     corner_n[k] = load3(&v[3]);
                 }
@@ -1068,14 +1082,15 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             for (std::size_t k = 0; k < count; ++k) {
                 const std::size_t at_x = static_cast<std::size_t>(x) + k;
                 glm::vec3 p, n;
-                interpolate_surface(object, *tri, s.q0[at_x], s.q1[at_x], s.q2[at_x], p, n);
+                interpolate_surface(object, *tri, varyings_of(*tri), s.q0[at_x], s.q1[at_x], s.q2[at_x],
+                                    p, n);
                 const std::size_t at = run_length + k;
                 s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
                 s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
             }
         } else {
             float corner[3][6];
-            span_corners(object, *tri, corner);
+            span_corners(object, *tri, varyings_of(*tri), corner);
             // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
             const float* face = object.shading == Shading::Faceted
                                     ? &object.face_normals[tri->source].x
