@@ -1041,6 +1041,7 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         if (run_length == 0) run_first = x;
         run_object = &object;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
+        const CornerVaryings* const varyings = varyings_of(*tri);  // a clipped piece's, or null
 #if defined(__SSE2__)
         if (count < short_span) {
             // Small triangles: the formulas of interpolate_surface pixel by
@@ -1048,7 +1049,6 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             // and z in the lanes of one SSE vector: the same products and
             // sums, in the same order, as the scalar code and the kernel.
             __m128 corner_p[3], corner_n[3];
-            const CornerVaryings* const varyings = varyings_of(*tri);
             for (int k = 0; k < 3; ++k) {
                 if (!varyings) {
                     corner_p[k] = load3(&object.positions[tri->vertex[k]].x);
@@ -1082,15 +1082,14 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             for (std::size_t k = 0; k < count; ++k) {
                 const std::size_t at_x = static_cast<std::size_t>(x) + k;
                 glm::vec3 p, n;
-                interpolate_surface(object, *tri, varyings_of(*tri), s.q0[at_x], s.q1[at_x], s.q2[at_x],
-                                    p, n);
+                interpolate_surface(object, *tri, varyings, s.q0[at_x], s.q1[at_x], s.q2[at_x], p, n);
                 const std::size_t at = run_length + k;
                 s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
                 s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
             }
         } else {
             float corner[3][6];
-            span_corners(object, *tri, varyings_of(*tri), corner);
+            span_corners(object, *tri, varyings, corner);
             // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
             const float* face = object.shading == Shading::Faceted
                                     ? &object.face_normals[tri->source].x
