@@ -4,8 +4,9 @@
 // Timing only: nothing here passes or fails.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -17,22 +18,28 @@
 
 namespace {
 
-// 1024 surface points on a unit sphere facing the eye, lit by a point and an
-// ambient light: a block of a full-screen Phong fill.
+// A row of 1024 pixels of a unit sphere seen from z = 4 (its middle row:
+// each pixel's view depth and normal), lit by a point and an ambient light:
+// a block of a full-screen Phong fill.
 struct Block {
-    std::vector<float> px, py, pz, nx, ny, nz, r, g, b;
+    std::vector<float> w, nx, ny, nz, r, g, b;
     std::vector<litkit::equations::PreparedLight> lights;
     litkit::Material material;
-    float eye[3] = {0.0f, 0.0f, 4.0f};
+    // Looking down −z with a 1024-pixel row spanning x ∈ [−1, 1] at z = 0.
+    litkit::kernels::RowRays rays{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, -1.0f}, {0.25f / 1024.0f, 0.0f, 0.0f}};
 
     explicit Block(std::size_t count) {
-        std::mt19937 random(1);
-        std::uniform_real_distribution<float> angle(-1.2f, 1.2f);
         for (std::size_t i = 0; i < count; ++i) {
-            const float a = angle(random), b = angle(random);
-            const float x = std::sin(a) * std::cos(b), y = std::sin(b), z = std::cos(a) * std::cos(b);
-            px.push_back(x), py.push_back(y), pz.push_back(z);
-            nx.push_back(x), ny.push_back(y), nz.push_back(z);
+            // The ray (x, 0, −1) from the eye meets the sphere at the nearer root.
+            const float k = static_cast<float>(2 * i + 1) - static_cast<float>(count);
+            const float x = k * rays.across[0];
+            const float a = x * x + 1.0f, b = -8.0f, c = 15.0f;  // |eye + t·d|² = 1
+            const float disc = std::max(b * b - 4.0f * a * c, 0.0f);
+            const float t = (-b - std::sqrt(disc)) / (2.0f * a);
+            w.push_back(t);
+            const float px = t * x, pz = 4.0f - t;
+            const float length = std::sqrt(px * px + pz * pz);
+            nx.push_back(px / length), ny.push_back(0.0f), nz.push_back(pz / length);
         }
         r.resize(count), g.resize(count), b.resize(count);
         lights.push_back(litkit::equations::prepare_light(
@@ -45,15 +52,15 @@ struct Block {
 void shade_block(benchmark::State& state, const litkit::kernels::Kernels& kernels,
                  litkit::Reflection reflection) {
     Block block(1024);
-    const litkit::kernels::SurfaceRun surface{block.px.data(), block.py.data(), block.pz.data(),
-                                              block.nx.data(), block.ny.data(), block.nz.data(),
-                                              block.px.size()};
+    const litkit::kernels::SurfaceRun surface{&block.rays, 1.0f - static_cast<float>(block.w.size()),
+                                              block.w.data(), block.nx.data(), block.ny.data(),
+                                              block.nz.data(), block.w.size()};
     for (auto _ : state) {
-        kernels.shade_phong(reflection, block.lights, block.material, block.eye, surface,
+        kernels.shade_phong(reflection, block.lights, block.material, surface,
                             {block.r.data(), block.g.data(), block.b.data()});
         benchmark::DoNotOptimize(block.r.data());
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<long>(block.px.size()));
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(block.w.size()));
 }
 
 void BM_ShadeBlockAvx512Phong(benchmark::State& state) {

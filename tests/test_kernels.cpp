@@ -36,7 +36,7 @@ std::vector<const Kernels*> runnable_sets() {
     return sets;
 }
 
-// The fragment stage's formulas (render.cpp: shade_row, interpolate_surface),
+// The fragment stage's formulas (render.cpp: shade_row, interpolate_normal),
 // each product rounded on its own. `volatile` keeps this file's compiler
 // from fusing them as well.
 float mix(float q0, float q1, float q2, float a, float b, float c) {
@@ -54,55 +54,46 @@ TEST(Kernels, WeightsAndInterpolationRoundAsTheScalarFormulasOnEveryLength) {
         std::printf("checking the %s set\n", set->name);
         int compared = 0;
         for (std::size_t count = 1; count <= 70; ++count) {
-            for (bool faceted : {false, true}) {
-                std::vector<float> inverse_w(count), w1(count), w2(count);
-                for (std::size_t i = 0; i < count; ++i) {
-                    inverse_w[i] = depth(random);
-                    // b1/w1 and b2/w2 with b1 + b2 ≤ 1, as the rasterizer makes them.
-                    const float b1 = weight(random), b2 = weight(random) * (1.0f - b1);
-                    w1[i] = b1 * inverse_w[i] * weight(random);
-                    w2[i] = b2 * inverse_w[i] * weight(random);
-                }
-                float corner[3][6];
-                for (auto& c : corner)
-                    for (float& v : c) v = value(random);
-                const float face[3] = {0.0f, 0.6f, 0.8f};
-                std::vector<float> out[6];
-                for (auto& o : out) o.assign(count + 1, -1.0f);  // one past: must stay
-                std::vector<float> weights[3];
-                for (auto& q : weights) q.assign(count + 1, -1.0f);
-                set->perspective_weights(inverse_w.data(), w1.data(), w2.data(), count,
-                                         weights[0].data(), weights[1].data(), weights[2].data());
-                set->interpolate(weights[0].data(), weights[1].data(), weights[2].data(), count,
-                                 corner, faceted ? face : nullptr,
-                                 {out[0].data(), out[1].data(), out[2].data(), out[3].data(),
-                                  out[4].data(), out[5].data()});
-                for (std::size_t i = 0; i < count; ++i) {
-                    volatile float w = 1.0f / inverse_w[i];
-                    volatile float q1 = w1[i] * w, q2 = w2[i] * w;
-                    const float q0 = 1.0f - q1 - q2;
-                    const float expected_weights[3] = {q0, q1, q2};
-                    for (int k = 0; k < 3; ++k)
-                        ASSERT_EQ(std::memcmp(&expected_weights[k], &weights[k][i], sizeof(float)), 0)
-                            << set->name << ": " << count << " pixels, pixel " << i << ", q" << k
-                            << ": " << weights[k][i] << " instead of " << expected_weights[k];
-                    for (int k = 0; k < 6; ++k) {
-                        const float expected = faceted && k >= 3
-                                                   ? face[k - 3]
-                                                   : mix(q0, q1, q2, corner[0][k], corner[1][k],
-                                                         corner[2][k]);
-                        ASSERT_EQ(std::memcmp(&expected, &out[k][i], sizeof(float)), 0)
-                            << set->name << ": span of " << count << ", pixel " << i
-                            << ", varying " << k << ": " << out[k][i] << " instead of "
-                            << expected;
-                        ++compared;
-                    }
-                }
-                for (int k = 0; k < 6; ++k) ASSERT_EQ(out[k][count], -1.0f) << "wrote past the span";
-                for (int k = 0; k < 3; ++k) ASSERT_EQ(weights[k][count], -1.0f) << "wrote past the row";
+            std::vector<float> inverse_w(count), w1(count), w2(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                inverse_w[i] = depth(random);
+                // b1/w1 and b2/w2 with b1 + b2 ≤ 1, as the rasterizer makes them.
+                const float b1 = weight(random), b2 = weight(random) * (1.0f - b1);
+                w1[i] = b1 * inverse_w[i] * weight(random);
+                w2[i] = b2 * inverse_w[i] * weight(random);
             }
+            float normal[3][3];
+            for (auto& c : normal)
+                for (float& v : c) v = value(random);
+            std::vector<float> out[3];
+            for (auto& o : out) o.assign(count + 1, -1.0f);  // one past: must stay
+            std::vector<float> weights[4];  // w, q0, q1, q2
+            for (auto& q : weights) q.assign(count + 1, -1.0f);
+            set->perspective_weights(inverse_w.data(), w1.data(), w2.data(), count, weights[0].data(),
+                                     weights[1].data(), weights[2].data(), weights[3].data());
+            set->interpolate(weights[1].data(), weights[2].data(), weights[3].data(), count, normal,
+                             {out[0].data(), out[1].data(), out[2].data()});
+            for (std::size_t i = 0; i < count; ++i) {
+                volatile float w = 1.0f / inverse_w[i];
+                volatile float q1 = w1[i] * w, q2 = w2[i] * w;
+                const float q0 = 1.0f - q1 - q2;
+                const float expected_weights[4] = {w, q0, q1, q2};
+                for (int k = 0; k < 4; ++k)
+                    ASSERT_EQ(std::memcmp(&expected_weights[k], &weights[k][i], sizeof(float)), 0)
+                        << set->name << ": " << count << " pixels, pixel " << i << ", value " << k
+                        << " (w, q0, q1, q2): " << weights[k][i] << " instead of " << expected_weights[k];
+                for (int k = 0; k < 3; ++k) {
+                    const float expected = mix(q0, q1, q2, normal[0][k], normal[1][k], normal[2][k]);
+                    ASSERT_EQ(std::memcmp(&expected, &out[k][i], sizeof(float)), 0)
+                        << set->name << ": span of " << count << ", pixel " << i << ", normal "
+                        << k << ": " << out[k][i] << " instead of " << expected;
+                    ++compared;
+                }
+            }
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(out[k][count], -1.0f) << "wrote past the span";
+            for (int k = 0; k < 4; ++k) ASSERT_EQ(weights[k][count], -1.0f) << "wrote past the row";
         }
-        EXPECT_EQ(compared, 6 * 2 * (70 * 71 / 2));
+        EXPECT_EQ(compared, 3 * (70 * 71 / 2));
     }
 }
 

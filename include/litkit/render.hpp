@@ -53,7 +53,7 @@ struct PixelProbe {
     std::array<std::uint32_t, 3> vertices{};  ///< the mesh vertex at each corner
     bool clipped = false;          ///< a piece of a triangle crossing the near plane
     std::array<float, 3> weights{};  ///< q0, q1, q2: perspective-correct, summing to 1
-    glm::vec3 position{0.0f};      ///< Phong shading: p interpolated from the corners
+    glm::vec3 position{0.0f};      ///< Phong shading: p, on the pixel's ray at its depth (docs/spec.md §3)
     glm::vec3 normal{0.0f};        ///< Phong shading: N interpolated, before renormalising
     glm::vec3 intensity{0.0f};     ///< I before clamping and gamma, as shaded
     Rgb8 rgb{};                    ///< the pixel

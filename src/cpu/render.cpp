@@ -49,9 +49,9 @@ namespace {
 using equations::PreparedLight;
 
 
-// Per-vertex data after the vertex stage. `varyings` holds the world position
-// and normal (Phong shading) or the unclamped colour (Gouraud; 3 used).
-constexpr int max_varyings = 6;
+// Per-vertex data after the vertex stage. `varyings` holds the normal
+// (Phong shading) or the unclamped colour (Gouraud).
+constexpr int max_varyings = 3;
 struct ClipVertex {
     glm::vec4 clip;
     std::array<float, max_varyings> varyings;
@@ -236,7 +236,7 @@ struct BandScratch {
     std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
     std::vector<float> r, g, b;                  // one row of intensities
     std::vector<float> q0, q1, q2;               // one row of perspective-correct weights
-    std::vector<float> px, py, pz, nx, ny, nz;   // one row of Phong surfaces
+    std::vector<float> view_w, nx, ny, nz;     // one row of Phong surfaces (view depth, normal)
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;               // this frame, by this thread
     // Setup's triangles of the chunk at hand, before they are binned.
@@ -291,6 +291,10 @@ struct Renderer::Impl {
     std::vector<BandScratch> scratch;  // one per thread
     std::vector<std::uint8_t> background_row;  // one image row of background colour
     int band_count = 0;
+    // The pixels' rays (docs/spec.md §1), for the world position at each
+    // pixel: d = forward + y · ray_up + k · ray_across (kernels::RowRays),
+    // set by vertex_stage.
+    glm::vec3 ray_forward{0.0f}, ray_up{0.0f}, ray_across{0.0f};
     // Set while Renderer::probe draws: the pixel to record, and the record.
     int probe_x = -1, probe_y = -1;
     mutable PixelProbe probed;
@@ -313,6 +317,7 @@ struct Renderer::Impl {
     void rasterize_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
+    kernels::RowRays row_rays(int y) const;
     // A clipped piece's corners (ShadeTriangle::vertex says where), or null.
     const CornerVaryings* varyings_of(const ShadeTriangle& tri) const {
         return tri.clipped() ? &chunks[tri.vertex[1]].clipped[tri.vertex[0]] : nullptr;
@@ -321,40 +326,44 @@ struct Renderer::Impl {
 
 namespace {
 
-// Phong shading's varyings at a pixel: p and N mixed from the corners (the
-// mesh's, or a clipped piece's) with the perspective-correct weights.
+// Phong shading's normal at a pixel: N mixed from the corners' (the
+// mesh's, or a clipped piece's) with the perspective-correct weights; p is
+// the point on the pixel's ray (kernels::RowRays).
 // `varyings`: the clipped piece's corners (Impl::varyings_of), or null.
-inline void interpolate_surface(const PreparedObject& object, const ShadeTriangle& tri,
-                                const CornerVaryings* varyings, float q0, float q1, float q2,
-                                glm::vec3& p, glm::vec3& n) {
-    if (!varyings) {
-        p = q0 * object.positions[tri.vertex[0]] + q1 * object.positions[tri.vertex[1]] +
-            q2 * object.positions[tri.vertex[2]];
-        n = q0 * object.normals[tri.vertex[0]] + q1 * object.normals[tri.vertex[1]] +
-            q2 * object.normals[tri.vertex[2]];
-    } else {
-        const CornerVaryings& v = *varyings;
-        auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
-        p = {mix(0), mix(1), mix(2)};
-        n = {mix(3), mix(4), mix(5)};
-    }
+inline glm::vec3 interpolate_normal(const PreparedObject& object, const ShadeTriangle& tri,
+                                    const CornerVaryings* varyings, float q0, float q1, float q2) {
     // docs/spec.md §9.2 faceted: the same per-pixel lighting, with the
     // triangle's DD8 normal (front-facing: back faces are culled).
-    if (object.shading == Shading::Faceted) n = object.face_normals[tri.source];
+    if (object.shading == Shading::Faceted) return object.face_normals[tri.source];
+    if (!varyings)
+        return q0 * object.normals[tri.vertex[0]] + q1 * object.normals[tri.vertex[1]] +
+               q2 * object.normals[tri.vertex[2]];
+    const CornerVaryings& v = *varyings;
+    auto mix = [&](int k) { return q0 * v[0][k] + q1 * v[1][k] + q2 * v[2][k]; };
+    return {mix(0), mix(1), mix(2)};
 }
 
-// A span's corners for the kernel set's interpolate: p and N of each, from
-// the mesh's vertices or the clipped piece's own.
-void span_corners(const PreparedObject& object, const ShadeTriangle& tri, const CornerVaryings* varyings,
-                  float (&corner)[3][6]) {
+// The world position at column x of a row whose rays are `rays`, at view
+// depth w: the kernels' shade_phong's formula, one pixel (each product
+// rounded on its own: x86-64's baseline, which this file is built for, has
+// no FMA; the kernels are built with -ffp-contract=off).
+glm::vec3 ray_point(const kernels::RowRays& rays, int width, int x, float w) {
+    const float k = static_cast<float>(2 * x + 1 - width);
+    glm::vec3 p;
+    for (int c = 0; c < 3; ++c) p[c] = rays.eye[c] + w * (k * rays.across[c] + rays.centre[c]);
+    return p;
+}
+
+// A span's corner normals for the kernel set's interpolate: the mesh
+// vertices', or the clipped piece's own.
+void span_normals(const PreparedObject& object, const ShadeTriangle& tri, const CornerVaryings* varyings,
+                  float (&normal)[3][3]) {
     for (int k = 0; k < 3; ++k) {
         if (!varyings) {
-            const glm::vec3& p = object.positions[tri.vertex[k]];
             const glm::vec3& n = object.normals[tri.vertex[k]];
-            corner[k][0] = p.x, corner[k][1] = p.y, corner[k][2] = p.z;
-            corner[k][3] = n.x, corner[k][4] = n.y, corner[k][5] = n.z;
+            normal[k][0] = n.x, normal[k][1] = n.y, normal[k][2] = n.z;
         } else {
-            std::copy_n((*varyings)[k].begin(), 6, corner[k]);
+            std::copy_n((*varyings)[k].begin(), 3, normal[k]);
         }
     }
 }
@@ -362,7 +371,7 @@ void span_corners(const PreparedObject& object, const ShadeTriangle& tri, const 
 #if defined(__SSE2__)
 // The fragment stage's short spans, x, y and z in the lanes of one SSE
 // vector: (v[0], v[1], v[2], 0), reading 3 floats; the lanes to three
-// places; and q0·c0 + q1·c1 + q2·c2, interpolate_surface's products and
+// places; and q0·c0 + q1·c1 + q2·c2, interpolate_normal's products and
 // sums in its order.
 inline __m128 load3(const float* v) {
     const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(v));
@@ -399,8 +408,8 @@ void Renderer::Impl::record_probe(const BandScratch& s, std::size_t i, int x) co
         probed.vertices = tri->vertex;
     }
     probed.weights = {q0, q1, q2};
-    interpolate_surface(objects[tri->object], *tri, varyings_of(*tri), q0, q1, q2, probed.position,
-                        probed.normal);
+    probed.position = ray_point(row_rays(probe_y), scene.output.width, x, w);
+    probed.normal = interpolate_normal(objects[tri->object], *tri, varyings_of(*tri), q0, q1, q2);
     probed.intensity = {s.r[static_cast<std::size_t>(x)], s.g[static_cast<std::size_t>(x)],
                         s.b[static_cast<std::size_t>(x)]};
 }
@@ -483,6 +492,20 @@ void Renderer::Impl::vertex_stage(int width, int height) {
                                                 double(observer.near), double(observer.far)));
     const glm::mat4 view_projection =
         projection * glm::lookAt(observer.position, observer.look_at, observer.up);
+    // The pixels' rays (docs/spec.md §1) in world space, with glm::lookAt's
+    // axes: forward f, right s = f × up, up u = s × f; NDC (x, y) looks along
+    // f + x · tan(fov/2) · aspect · s + y · tan(fov/2) · u, whose component
+    // along f is 1, so that the point at view depth w is eye + w · d.
+    {
+        const glm::dvec3 f = glm::normalize(glm::dvec3(observer.look_at) - glm::dvec3(eye));
+        const glm::dvec3 right = glm::normalize(glm::cross(f, glm::dvec3(observer.up)));
+        const glm::dvec3 up = glm::cross(right, f);
+        const double tan_half = std::tan(glm::radians(double(observer.fov_degrees)) / 2.0);
+        const double aspect = double(width) / double(height);
+        ray_forward = glm::vec3(f);
+        ray_up = glm::vec3(tan_half * up);
+        ray_across = glm::vec3(tan_half * aspect / double(width) * right);  // per unit of k
+    }
 
     constexpr std::size_t chunk = 4096;
     for (std::size_t o = 0; o < objects.size(); ++o) {
@@ -515,15 +538,25 @@ void Renderer::Impl::vertex_stage(int width, int height) {
     }
 }
 
+// Row y's rays (kernels::RowRays): NDC y = 1 − 2(y + 0.5)/H.
+kernels::RowRays Renderer::Impl::row_rays(int y) const {
+    const int height = scene.output.height;
+    const float ndc_y = static_cast<float>(double(height - 2 * y - 1) / double(height));
+    const glm::vec3 centre = ray_forward + ndc_y * ray_up;
+    const glm::vec3& eye = scene.observer.position;
+    return {{eye.x, eye.y, eye.z}, {centre.x, centre.y, centre.z}, {ray_across.x, ray_across.y, ray_across.z}};
+}
+
 // Clip and setup stages for one range of triangles, then binning to bands.
 void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, int height) {
     const PreparedObject& object = objects[chunk.object];
     const std::vector<glm::vec4>& clip = clip_positions[chunk.object];
     const std::vector<WindowCorner>& window = window_corners[chunk.object];
     const bool per_pixel = object.shading == Shading::Phong || object.shading == Shading::Faceted;
-    const int varying_count = per_pixel                            ? 6
-                              : object.shading == Shading::Gouraud ? 3
-                                                                   : 0;
+    // Clipped pieces carry their corners' normals (Phong; faceted takes the
+    // face's, and every per-pixel p comes from the pixel's ray) or colours
+    // (Gouraud).
+    const int varying_count = per_pixel || object.shading == Shading::Gouraud ? 3 : 0;
     const float half_width = 0.5f * static_cast<float>(width);
     const float half_height = 0.5f * static_cast<float>(height);
     std::vector<BinnedTriangle>& pending = scratch.pending;
@@ -640,12 +673,11 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
             input[k].clip = clip[v];
             input[k].varyings.fill(0.0f);
             if (per_pixel) {
-                const glm::vec3& p = object.positions[v];
                 const glm::vec3& n = object.normals[v];
-                input[k].varyings = {p.x, p.y, p.z, n.x, n.y, n.z};
+                input[k].varyings = {n.x, n.y, n.z};
             } else if (object.shading == Shading::Gouraud) {
                 const glm::vec3& c = vertex_colors[chunk.object][v];
-                input[k].varyings = {c.x, c.y, c.z, 0.0f, 0.0f, 0.0f};
+                input[k].varyings = {c.x, c.y, c.z};
             }
         }
         std::array<ClipVertex, 9> polygon;
@@ -905,22 +937,23 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     s.r.resize(w);
     s.g.resize(w);
     s.b.resize(w);
-    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.q0, &s.q1, &s.q2}) v->resize(w);
+    for (auto* v : {&s.view_w, &s.nx, &s.ny, &s.nz, &s.q0, &s.q1, &s.q2}) v->resize(w);
     const std::size_t offset = static_cast<std::size_t>(y % band_height) * w;
-    const float eye[3] = {scene.observer.position.x, scene.observer.position.y,
-                          scene.observer.position.z};
 
     // A run: consecutive Phong or faceted pixels of one object, shaded
     // together; it is made of spans of one triangle each, interpolated
-    // together (the corners are the same along a span).
+    // together (the corners are the same along a span). Its surfaces are in
+    // s.view_w … s.nz by column; their positions are on the row's rays.
+    const kernels::RowRays rays = row_rays(y);
     std::size_t run_length = 0;
     int run_first = 0;
     const PreparedObject* run_object = nullptr;
     auto flush = [&] {
         if (run_length == 0) return;
-        const kernels::SurfaceRun surface{s.px.data(), s.py.data(), s.pz.data(), s.nx.data(),
-                                          s.ny.data(), s.nz.data(), run_length};
-        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, eye, surface,
+        const std::size_t at = static_cast<std::size_t>(run_first);
+        const kernels::SurfaceRun surface{&rays,     static_cast<float>(2 * run_first + 1 - width),
+                                          &s.view_w[at], &s.nx[at], &s.ny[at], &s.nz[at], run_length};
+        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, surface,
                             {s.r.data() + run_first, s.g.data() + run_first, s.b.data() + run_first});
         run_length = 0;
     };
@@ -928,10 +961,11 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
     const int band_row = y % band_height;
     const int begin = s.touched_begin[static_cast<std::size_t>(band_row)];
     const int end = std::max(begin, s.touched_end[static_cast<std::size_t>(band_row)]);
-    // Every drawn pixel's perspective-correct weights, a vector at a time.
+    // Every drawn pixel's view depth and perspective-correct weights, a
+    // vector at a time.
     kernels.perspective_weights(&s.depth[offset + begin], &s.weight1[offset + begin],
                                 &s.weight2[offset + begin], static_cast<std::size_t>(end - begin),
-                                &s.q0[begin], &s.q1[begin], &s.q2[begin]);
+                                &s.view_w[begin], &s.q0[begin], &s.q1[begin], &s.q2[begin]);
     bool background_between = false;  // some pixel in [begin, end) has no triangle
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);
@@ -982,12 +1016,10 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             if (run_length == 0) run_first = x;
             run_object = &object;
             const ShadeTriangle* const* visible = s.visible.data() + offset;
-            // The run's arrays; column at goes to place at − run_first.
-            float* const out[6] = {s.px.data(), s.py.data(), s.pz.data(), s.nx.data(), s.ny.data(), s.nz.data()};
+            float* const out[3] = {s.nx.data(), s.ny.data(), s.nz.data()};
             const float* const q0 = s.q0.data();
             const float* const q1 = s.q1.data();
             const float* const q2 = s.q2.data();
-            const glm::vec3* const positions = object.positions.data();
             const glm::vec3* const normals = object.normals.data();
             const std::uint32_t object_index = tri->object;
             int at = x;
@@ -997,27 +1029,19 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
                     // A long span: the kernel set's interpolate.
                     int span_end = at + 1;
                     while (span_end < end && visible[span_end] == span) ++span_end;
-                    float corner[3][6];
-                    span_corners(object, *span, nullptr, corner);
-                    const int place = at - run_first;
+                    float normal[3][3];
+                    span_normals(object, *span, nullptr, normal);
                     kernels.interpolate(q0 + at, q1 + at, q2 + at, static_cast<std::size_t>(span_end - at),
-                                        corner, nullptr,
-                                        {out[0] + place, out[1] + place, out[2] + place, out[3] + place,
-                                         out[4] + place, out[5] + place});
+                                        normal, {out[0] + at, out[1] + at, out[2] + at});
                     at = span_end;
                 } else {
-                    const __m128 p0 = load3(&positions[span->vertex[0]].x),
-                                 p1 = load3(&positions[span->vertex[1]].x),
-                                 p2 = load3(&positions[span->vertex[2]].x);
                     const __m128 n0 = load3(&normals[span->vertex[0]].x), n1 = load3(&normals[span->vertex[1]].x),
                                  n2 = load3(&normals[span->vertex[2]].x);
                     // The triangle a few pixels on, fetched ahead (once a span).
                     if (at + 12 < end) __builtin_prefetch(visible[at + 12]);
                     do {
                         const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]), c = _mm_set1_ps(q2[at]);
-                        const int place = at - run_first;
-                        store3(mix3(a, b, c, p0, p1, p2), out[0] + place, out[1] + place, out[2] + place);
-                        store3(mix3(a, b, c, n0, n1, n2), out[3] + place, out[4] + place, out[5] + place);
+                        store3(mix3(a, b, c, n0, n1, n2), out[0] + at, out[1] + at, out[2] + at);
                         ++at;
                     } while (at < end && visible[at] == span);
                 }
@@ -1031,8 +1055,8 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
             continue;
         }
 #endif
-        // Phong or faceted: the span of this triangle, interpolated at once
-        // (the formulas of interpolate_surface, in SIMD).
+        // Phong or faceted: the span of this triangle's normals at once (the
+        // formulas of interpolate_normal).
         int span_end = x + 1;
         while (span_end < end && s.visible[offset + static_cast<std::size_t>(span_end)] == tri)
             ++span_end;
@@ -1042,62 +1066,41 @@ void Renderer::Impl::shade_row(int y, int width, BandScratch& s, std::uint8_t* r
         run_object = &object;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
         const CornerVaryings* const varyings = varyings_of(*tri);  // a clipped piece's, or null
+        const std::size_t first = static_cast<std::size_t>(x);
+        if (object.shading == Shading::Faceted) {
+            // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
+            const glm::vec3& n = object.face_normals[tri->source];
+            std::fill_n(&s.nx[first], count, n.x);
+            std::fill_n(&s.ny[first], count, n.y);
+            std::fill_n(&s.nz[first], count, n.z);
+        } else
 #if defined(__SSE2__)
         if (count < short_span) {
-            // Small triangles: the formulas of interpolate_surface pixel by
+            // Small triangles: the formulas of interpolate_normal pixel by
             // pixel (a SIMD call across pixels would mostly pad), with x, y
             // and z in the lanes of one SSE vector: the same products and
             // sums, in the same order, as the scalar code and the kernel.
-            __m128 corner_p[3], corner_n[3];
-            for (int k = 0; k < 3; ++k) {
-                if (!varyings) {
-                    corner_p[k] = load3(&object.positions[tri->vertex[k]].x);
-                    corner_n[k] = load3(&object.normals[tri->vertex[k]].x);
-                } else {
-                    const auto& v = (*varyings)[k];
-                    corner_p[k] = load3(&v[0]);
-                    corner_n[k] = load3(&v[3]);
-                }
-            }
-            const bool faceted = object.shading == Shading::Faceted;
-            for (std::size_t k = 0; k < count; ++k) {
-                const std::size_t at_x = static_cast<std::size_t>(x) + k;
-                const __m128 a = _mm_set1_ps(s.q0[at_x]), b = _mm_set1_ps(s.q1[at_x]),
-                             c = _mm_set1_ps(s.q2[at_x]);
-                const std::size_t at = run_length + k;
-                store3(mix3(a, b, c, corner_p[0], corner_p[1], corner_p[2]), &s.px[at], &s.py[at], &s.pz[at]);
-                if (faceted) {
-                    // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
-                    const glm::vec3& n = object.face_normals[tri->source];
-                    s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
-                } else {
-                    store3(mix3(a, b, c, corner_n[0], corner_n[1], corner_n[2]), &s.nx[at], &s.ny[at], &s.nz[at]);
-                }
+            __m128 corner[3];
+            for (int k = 0; k < 3; ++k)
+                corner[k] = varyings ? load3(&(*varyings)[k][0]) : load3(&object.normals[tri->vertex[k]].x);
+            for (std::size_t at = first; at < first + count; ++at) {
+                const __m128 a = _mm_set1_ps(s.q0[at]), b = _mm_set1_ps(s.q1[at]), c = _mm_set1_ps(s.q2[at]);
+                store3(mix3(a, b, c, corner[0], corner[1], corner[2]), &s.nx[at], &s.ny[at], &s.nz[at]);
             }
         } else
 #endif
         if (count < short_span) {
             // Small triangles: the scalar formulas, pixel by pixel (a SIMD
             // call would mostly pad); the same roundings as the kernel.
-            for (std::size_t k = 0; k < count; ++k) {
-                const std::size_t at_x = static_cast<std::size_t>(x) + k;
-                glm::vec3 p, n;
-                interpolate_surface(object, *tri, varyings, s.q0[at_x], s.q1[at_x], s.q2[at_x], p, n);
-                const std::size_t at = run_length + k;
-                s.px[at] = p.x, s.py[at] = p.y, s.pz[at] = p.z;
+            for (std::size_t at = first; at < first + count; ++at) {
+                const glm::vec3 n = interpolate_normal(object, *tri, varyings, s.q0[at], s.q1[at], s.q2[at]);
                 s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
             }
         } else {
-            float corner[3][6];
-            span_corners(object, *tri, varyings, corner);
-            // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
-            const float* face = object.shading == Shading::Faceted
-                                    ? &object.face_normals[tri->source].x
-                                    : nullptr;
-            kernels.interpolate(&s.q0[x], &s.q1[x], &s.q2[x], count, corner, face,
-                                {s.px.data() + run_length, s.py.data() + run_length,
-                                 s.pz.data() + run_length, s.nx.data() + run_length,
-                                 s.ny.data() + run_length, s.nz.data() + run_length});
+            float normal[3][3];
+            span_normals(object, *tri, varyings, normal);
+            kernels.interpolate(&s.q0[first], &s.q1[first], &s.q2[first], count, normal,
+                                {&s.nx[first], &s.ny[first], &s.nz[first]});
         }
         run_length += count;
         x = span_end - 1;

@@ -39,23 +39,31 @@ struct WindowCorner {
     bool valid = false;        // false: beyond the fixed-point range (degenerate input)
 };
 
-// A run of pixels in structure-of-arrays form: the interpolated world
-// position and (not yet renormalised) normal of each.
+// The rays of one row of pixels (docs/spec.md §1), for the world position
+// seen at each pixel (§3): pixel i's ray leaves the eye along
+// d = centre + k · across, with the whole number k = 2i + 1 − W (its NDC x is
+// k / W), and the point on it at view depth w (clip w) is p = eye + w · d.
+struct RowRays {
+    float eye[3];
+    float centre[3];  // forward + y · tan(fov/2) · up (the row's NDC y): d at k = 0
+    float across[3];  // tan(fov/2) · aspect / W · right: d's change per unit of k
+};
+
+// A run of consecutive pixels of one row in structure-of-arrays form: the
+// view depth w of each (its world position is on its ray, RowRays) and its
+// interpolated (not yet renormalised) normal.
 struct SurfaceRun {
-    const float* px;
-    const float* py;
-    const float* pz;
+    const RowRays* rays;
+    float first_k;  // k of the run's first pixel (RowRays): the next ones' are + 2, + 4, …
+    const float* w;
     const float* nx;
     const float* ny;
     const float* nz;
     std::size_t count;
 };
 
-// Where interpolate writes a span's surfaces (structure of arrays).
-struct SurfaceOut {
-    float* px;
-    float* py;
-    float* pz;
+// Where interpolate writes a span's normals (structure of arrays).
+struct NormalOut {
     float* nx;
     float* ny;
     float* nz;
@@ -86,13 +94,12 @@ struct SmallTriangle {
 
 struct Kernels {
     const char* name;
-    // docs/spec.md §3 Phong shading's varyings along a span of pixels of one
-    // triangle: p, N = q0·c0 + q1·c1 + q2·c2 from the corners (corner[k] =
-    // p, N) and the pixels' perspective-correct weights (perspective_weights).
-    // With `face_normal` (faceted shading), N is that normal. The same
+    // docs/spec.md §3 Phong shading's normal along a span of pixels of one
+    // triangle: N = q0·n0 + q1·n1 + q2·n2 from the corners' normals and the
+    // pixels' perspective-correct weights (perspective_weights). The same
     // roundings as the scalar formulas in render.cpp: no fused multiply-add.
     void (*interpolate)(const float* q0, const float* q1, const float* q2, std::size_t count,
-                        const float (*corner)[6], const float* face_normal, const SurfaceOut& out);
+                        const float (*normal)[3], const NormalOut& out);
     // The vertex stage of `count` mesh vertices (positions x, y, z one after
     // another): clip = M · (p, 1) as glm multiplies, (M0·x + M1·y) +
     // (M2·z + M3) with M's columns (written x, y, z, w per vertex), and the
@@ -107,12 +114,14 @@ struct Kernels {
     // The perspective-correct weights of a row of pixels, from the
     // visibility buffer's 1/w and b1/w1, b2/w2: w = 1 / (1/w), q1 = b1/w1 · w,
     // q2 = b2/w2 · w, q0 = (1 − q1) − q2 (docs/spec.md §3; where nothing was
-    // drawn, 1/w is 0 and the weights are not numbers, unused).
+    // drawn, 1/w is 0 and the weights are not numbers, unused); w too.
     void (*perspective_weights)(const float* inverse_w, const float* weight1, const float* weight2,
-                                std::size_t count, float* q0, float* q1, float* q2);
-    // docs/spec.md §3 Phong shading: renormalise the normal, light per pixel.
+                                std::size_t count, float* w, float* q0, float* q1, float* q2);
+    // docs/spec.md §3 Phong shading: renormalise the normal, light per pixel
+    // at p = eye + w · d, d = centre + k · across (RowRays), each product
+    // rounded on its own.
     void (*shade_phong)(Reflection reflection, std::span<const equations::PreparedLight> lights,
-                        const Material& material, const float eye[3], const SurfaceRun& surface,
+                        const Material& material, const SurfaceRun& surface,
                         const ColorRun& out);
     // docs/spec.md §4 pixel values: round(255 · clamp(I, 0, 1)^(1/gamma)) per channel,
     // written as interleaved RGB bytes.

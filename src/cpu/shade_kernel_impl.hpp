@@ -58,21 +58,35 @@ struct Impl {
 
     template <Reflection R>
     static void shade_run(std::span<const equations::PreparedLight> lights, const Material& material,
-                          const float eye[3], const SurfaceRun& s, const ColorRun& out) {
+                          const SurfaceRun& s, const ColorRun& out) {
         using namespace equations;
         const MaterialT<Batch> m = splat<Batch>(material);
-        const Vec3<Batch> eye_position{Batch(eye[0]), Batch(eye[1]), Batch(eye[2])};
+        const RowRays& rays = *s.rays;
+        const Vec3<Batch> eye{Batch(rays.eye[0]), Batch(rays.eye[1]), Batch(rays.eye[2])};
+        const Vec3<Batch> centre{Batch(rays.centre[0]), Batch(rays.centre[1]), Batch(rays.centre[2])};
+        const Vec3<Batch> across{Batch(rays.across[0]), Batch(rays.across[1]), Batch(rays.across[2])};
+        // k of the lanes after the first: whole numbers, exact in a float.
+        alignas(64) float lane_k[width];
+        for (std::size_t lane = 0; lane < width; ++lane) lane_k[lane] = 2.0f * static_cast<float>(lane);
+        const Batch lane_step = Batch::load_aligned(lane_k);
         // Full batches straight from the arrays; the tail through a padded
         // copy. (No float instantiation here: this text is also compiled
         // with -mavx2, and an inline float function built that way could be
         // the copy the linker keeps for every caller.)
-        auto shade_batch = [&](const float* px, const float* py, const float* pz, const float* nx,
-                               const float* ny, const float* nz, float* r, float* g, float* b) {
-            const Vec3<Batch> p{Batch::load_unaligned(px), Batch::load_unaligned(py),
-                                Batch::load_unaligned(pz)};
+        auto shade_batch = [&](std::size_t i, const float* w, const float* nx, const float* ny,
+                               const float* nz, float* r, float* g, float* b) {
+            // The point at depth w on each pixel's ray; rounded(): no
+            // product fuses with the sum after it.
+            const Batch k = Batch(s.first_k + 2.0f * static_cast<float>(i)) + lane_step;
+            const Batch depth = Batch::load_unaligned(w);
+            auto along = [&](const Batch& e, const Batch& c, const Batch& a) {
+                return e + rounded(depth * (rounded(k * a) + c));
+            };
+            const Vec3<Batch> p{along(eye.x, centre.x, across.x), along(eye.y, centre.y, across.y),
+                                along(eye.z, centre.z, across.z)};
             const Vec3<Batch> n = normalize(Vec3<Batch>{
                 Batch::load_unaligned(nx), Batch::load_unaligned(ny), Batch::load_unaligned(nz)});
-            const Vec3<Batch> v = normalize(eye_position - p);
+            const Vec3<Batch> v = normalize(eye - p);
             const Vec3<Batch> color = shade_point<R>(lights, m, p, n, v);
             color.x.store_unaligned(r);
             color.y.store_unaligned(g);
@@ -80,20 +94,19 @@ struct Impl {
         };
         std::size_t i = 0;
         for (; i + width <= s.count; i += width) {
-            shade_batch(s.px + i, s.py + i, s.pz + i, s.nx + i, s.ny + i, s.nz + i, out.r + i,
-                        out.g + i, out.b + i);
+            shade_batch(i, s.w + i, s.nx + i, s.ny + i, s.nz + i, out.r + i, out.g + i, out.b + i);
         }
         if (i < s.count) {
-            alignas(64) float in[6][width];
+            alignas(64) float in[4][width];
             alignas(64) float result[3][width];
-            const float* sources[6] = {s.px, s.py, s.pz, s.nx, s.ny, s.nz};
-            for (int k = 0; k < 6; ++k) {
+            const float* sources[4] = {s.w, s.nx, s.ny, s.nz};
+            for (int k = 0; k < 4; ++k) {
                 for (std::size_t lane = 0; lane < width; ++lane) {
                     // Pad with the last pixel: valid numbers, results unused.
                     in[k][lane] = sources[k][i + lane < s.count ? i + lane : s.count - 1];
                 }
             }
-            shade_batch(in[0], in[1], in[2], in[3], in[4], in[5], result[0], result[1], result[2]);
+            shade_batch(i, in[0], in[1], in[2], in[3], result[0], result[1], result[2]);
             for (std::size_t lane = 0; i + lane < s.count; ++lane) {
                 out.r[i + lane] = result[0][lane];
                 out.g[i + lane] = result[1][lane];
@@ -103,10 +116,9 @@ struct Impl {
     }
 
     static void shade_phong(Reflection reflection, std::span<const equations::PreparedLight> lights,
-                            const Material& material, const float eye[3], const SurfaceRun& surface,
-                            const ColorRun& out) {
+                            const Material& material, const SurfaceRun& surface, const ColorRun& out) {
         equations::with_reflection(reflection, [&](auto model) {
-            shade_run<decltype(model)::value>(lights, material, eye, surface, out);
+            shade_run<decltype(model)::value>(lights, material, surface, out);
         });
     }
 
@@ -196,13 +208,14 @@ struct Impl {
     }
 
     static void perspective_weights(const float* inverse_w, const float* weight1,
-                                    const float* weight2, std::size_t count, float* q0, float* q1,
-                                    float* q2) {
+                                    const float* weight2, std::size_t count, float* w_out, float* q0,
+                                    float* q1, float* q2) {
         auto block = [&](std::size_t i) {
             // rounded(): q0's subtractions must not fuse with the products.
             const Batch w = Batch(1.0f) / Batch::load_unaligned(inverse_w + i);
             const Batch b = rounded(Batch::load_unaligned(weight1 + i) * w);
             const Batch c = rounded(Batch::load_unaligned(weight2 + i) * w);
+            w.store_unaligned(w_out + i);
             (Batch(1.0f) - b - c).store_unaligned(q0 + i);
             b.store_unaligned(q1 + i);
             c.store_unaligned(q2 + i);
@@ -212,6 +225,7 @@ struct Impl {
         for (; i < count; ++i) {  // the last few one at a time, the same operations
             const float w = 1.0f / inverse_w[i];
             const float b = weight1[i] * w, c = weight2[i] * w;
+            w_out[i] = w;
             q0[i] = 1.0f - b - c;
             q1[i] = b;
             q2[i] = c;
@@ -219,28 +233,25 @@ struct Impl {
     }
 
     static void interpolate(const float* q0, const float* q1, const float* q2, std::size_t count,
-                            const float (*corner)[6], const float* face_normal,
-                            const SurfaceOut& out) {
-        float* outputs[6] = {out.px, out.py, out.pz, out.nx, out.ny, out.nz};
-        const int mixed = face_normal ? 3 : 6;
+                            const float (*normal)[3], const NormalOut& out) {
+        float* outputs[3] = {out.nx, out.ny, out.nz};
         auto span = [&](std::size_t i, const float* a0, const float* a1, const float* a2,
                         float* const* dest) {
             const Batch w0 = Batch::load_unaligned(a0), w1 = Batch::load_unaligned(a1),
                         w2 = Batch::load_unaligned(a2);
-            for (int k = 0; k < mixed; ++k) {
-                const Batch a = rounded(w0 * Batch(corner[0][k]));
-                const Batch b = rounded(w1 * Batch(corner[1][k]));
-                const Batch c = rounded(w2 * Batch(corner[2][k]));
+            for (int k = 0; k < 3; ++k) {
+                const Batch a = rounded(w0 * Batch(normal[0][k]));
+                const Batch b = rounded(w1 * Batch(normal[1][k]));
+                const Batch c = rounded(w2 * Batch(normal[2][k]));
                 (a + b + c).store_unaligned(dest[k] + i);
             }
-            for (int k = mixed; k < 6; ++k) Batch(face_normal[k - 3]).store_unaligned(dest[k] + i);
         };
         std::size_t i = 0;
         for (; i + width <= count; i += width) span(i, q0 + i, q1 + i, q2 + i, outputs);
         if (i < count) {
             alignas(64) float in[3][width];
-            alignas(64) float result[6][width];
-            float* dest[6] = {result[0], result[1], result[2], result[3], result[4], result[5]};
+            alignas(64) float result[3][width];
+            float* dest[3] = {result[0], result[1], result[2]};
             for (std::size_t lane = 0; lane < width; ++lane) {
                 // Pad with the last pixel: valid numbers, results unused.
                 const std::size_t from = i + lane < count ? i + lane : count - 1;
@@ -249,7 +260,7 @@ struct Impl {
                 in[2][lane] = q2[from];
             }
             span(0, in[0], in[1], in[2], dest);
-            for (int k = 0; k < 6; ++k)
+            for (int k = 0; k < 3; ++k)
                 for (std::size_t lane = 0; i + lane < count; ++lane) outputs[k][i + lane] = result[k][lane];
         }
     }
