@@ -21,6 +21,7 @@
 #endif
 
 #include "cpu/shade_kernel.hpp"
+#include "litkit/lighting.hpp"  // to_pixel
 #include "cpu/shade_kernel_impl.hpp"  // equations::pow of batches
 
 namespace {
@@ -161,6 +162,41 @@ void expect_pixel(float p0, float p1, float p2, const void* triangle, Visibility
 }
 
 }  // namespace
+
+// encode against litkit::to_pixel, the public scalar rule (docs/spec.md §4
+// pixel values), on every length: intensities in and out of [0, 1], NaN,
+// gamma 1 and 2.2. Inputs and output end at an inaccessible page, so that a
+// kernel reading or writing past the row faults.
+TEST(Kernels, EncodeWritesToPixelsBytesOnEveryLength) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> intensity(-0.2f, 1.3f);
+    for (const Kernels* set : runnable_sets()) {
+        std::printf("checking the %s set\n", set->name);
+        for (const float gamma : {1.0f, 2.2f}) {
+            for (std::size_t count = 1; count <= 70; ++count) {
+                std::vector<float> channel[3];
+                for (auto& c : channel) {
+                    for (std::size_t i = 0; i < count; ++i) c.push_back(intensity(random));
+                    c[random() % count] = std::numeric_limits<float>::quiet_NaN();
+                }
+                std::vector<std::uint8_t> expected;
+                for (std::size_t i = 0; i < count; ++i)
+                    for (const auto& c : channel) expected.push_back(litkit::to_pixel(c[i], gamma));
+#if defined(__linux__)
+                GuardedCopy<float> r(channel[0]), g(channel[1]), b(channel[2]);
+                GuardedCopy<std::uint8_t> out(std::vector<std::uint8_t>(3 * count, 7));
+                set->encode(r.data(), g.data(), b.data(), count, gamma, out.data());
+                const std::vector<std::uint8_t> written = out.values();
+#else
+                std::vector<std::uint8_t> written(3 * count, 7);
+                set->encode(channel[0].data(), channel[1].data(), channel[2].data(), count, gamma,
+                            written.data());
+#endif
+                ASSERT_EQ(written, expected) << set->name << ", " << count << " pixels, gamma " << gamma;
+            }
+        }
+    }
+}
 
 TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
     std::mt19937 random(61);

@@ -169,9 +169,36 @@ void visibility_small(const SmallTriangle& t, float* depth, const void** visible
     }
 }
 
+// encode's levels as the other sets compute them (Impl::to_levels), packed
+// to RGB bytes in registers: each pixel's levels as one word (r in the
+// lowest byte), each 128-bit lane's four words squeezed to its first 12
+// bytes, the lanes' 12-byte pieces moved together, and 3 bytes a pixel
+// written under a byte mask (no word stores through memory, whose narrow
+// reloads stall on store forwarding).
+void encode(const float* r, const float* g, const float* b, std::size_t count, float gamma,
+            std::uint8_t* rgb) {
+    // Bytes 0-2, 4-6, 8-10, 12-14 of each 128-bit lane, then zeros.
+    const __m512i squeeze = _mm512_set4_epi32(static_cast<int>(0x80808080u), 0x0e0d0c0a, 0x09080605, 0x04020100);
+    const __m512i together = _mm512_setr_epi32(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 3, 7, 11, 15);
+    const float* const channels[3] = {r, g, b};
+    for (std::size_t i = 0; i < count; i += 16) {
+        const std::size_t lanes = count - i < 16 ? count - i : 16;
+        // Lanes past the end load 0 (masked: no read past the arrays) and are not written.
+        const auto in = static_cast<__mmask16>((1u << lanes) - 1u);
+        __m512i word = _mm512_setzero_si512();
+        for (int c = 0; c < 3; ++c) {
+            const Avx512Impl::Batch level =
+                Avx512Impl::to_levels(Avx512Impl::Batch(_mm512_maskz_loadu_ps(in, channels[c] + i)), gamma);
+            word = _mm512_or_si512(word, _mm512_slli_epi32(_mm512_cvttps_epi32(level), 8 * c));
+        }
+        const __m512i packed = _mm512_permutexvar_epi32(together, _mm512_shuffle_epi8(word, squeeze));
+        _mm512_mask_storeu_epi8(rgb + 3 * i, (__mmask64{1} << (3 * lanes)) - 1u, packed);
+    }
+}
+
 }  // namespace
 
 const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::transform_vertices, &Avx512Impl::perspective_weights, &Avx512Impl::shade_phong,
-                             &Avx512Impl::encode, &visibility_row, &visibility_small};
+                             &encode, &visibility_row, &visibility_small};
 
 }  // namespace litkit::kernels
