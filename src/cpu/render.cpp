@@ -702,11 +702,31 @@ void Renderer::Impl::setup(SetupChunk& chunk, BandScratch& scratch, int width, i
         counts[b] = chunk.band_start[b];  // from here on: the next free place in band b
     }
     chunk.binned.resize(chunk.band_start[bands]);
+    // The copies are written around the cache (non-temporal): the 261k
+    // sphere's binned triangles are about 11 MB, read again only when every
+    // chunk is set up, so caching them on the way out only costs the reads
+    // of their lines before the writes (session 11: frame 0.99x).
     for (const BinnedTriangle& binned : pending) {
         const RasterTriangle& tri = binned.raster;
+#if defined(__SSE2__)
+        const auto* from = reinterpret_cast<const __m128i*>(&binned);
+        const __m128i q0 = _mm_load_si128(from), q1 = _mm_load_si128(from + 1),
+                      q2 = _mm_load_si128(from + 2), q3 = _mm_load_si128(from + 3);
+        for (int b = tri.min_y / band_height; b <= tri.max_y() / band_height; ++b) {
+            auto* to = reinterpret_cast<__m128i*>(&chunk.binned[counts[b]++]);
+            _mm_stream_si128(to, q0);
+            _mm_stream_si128(to + 1, q1);
+            _mm_stream_si128(to + 2, q2);
+            _mm_stream_si128(to + 3, q3);
+        }
+#else
         for (int b = tri.min_y / band_height; b <= tri.max_y() / band_height; ++b)
             chunk.binned[counts[b]++] = binned;
+#endif
     }
+#if defined(__SSE2__)
+    _mm_sfence();  // the streamed copies are seen before the pool reports this job done
+#endif
 }
 
 // Rasterize stage for one band: the visibility buffer holds, per pixel, the
