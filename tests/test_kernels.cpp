@@ -232,11 +232,16 @@ TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
     }
 }
 
+// Random small triangles (at most 8 pixels across and down, as render.cpp
+// calls them small), their corners often on pixel centres and edges through
+// them (the top-left rule's ties), partly left of the image or starting
+// above the band: the kernels' coverage and writes against the rule written
+// out here from the corners, in 64 bits, pixel by pixel.
 TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
+    constexpr std::int32_t one = static_cast<std::int32_t>(litkit::kernels::subpixel_one);
     std::mt19937 random(62);
-    std::uniform_int_distribution<std::int32_t> edge(-3000, 3000), along(-700, 700);
-    std::uniform_int_distribution<int> bias(-1, 0), offset(0, 5);
-    std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-5f, 1e-3f);
+    std::uniform_int_distribution<std::int32_t> base(-3 * one, 6 * one), extent(0, 8 * one), coin(0, 3);
+    std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-9f, 1e-7f);
     int triangle_tag = 0;
     int sets_with_kernel = 0;
     for (const Kernels* set : runnable_sets()) {
@@ -246,83 +251,127 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
         }
         ++sets_with_kernel;
         std::printf("checking the %s set's visibility_small\n", set->name);
-        int covered_ninth = 0;
-        for (int span = 0; span <= 8; ++span) {
-            for (int rows = 1; rows <= 9; ++rows) {
-                for (int trial = 0; trial < 40; ++trial) {
-                    litkit::kernels::SmallTriangle t{};
-                    for (int k = 0; k < 3; ++k) {
-                        t.bias[k] = bias(random);
-                        // Mostly inside, so that whole rows are covered too.
-                        t.origin[k] = edge(random) + 2000 + t.bias[k];
-                        t.step_x[k] = along(random);
-                        t.step_y[k] = along(random);
-                        t.weight[k] = weight(random);
-                    }
-                    t.rows = rows;
-                    t.span = span;
-                    t.min_x = offset(random);
-                    t.triangle = &triangle_tag;
-                    const std::size_t stride = static_cast<std::size_t>(t.min_x + span + 3);
-                    VisibilityBuffers got(stride * static_cast<std::size_t>(rows)), expected = got;
-                    for (std::size_t i = 0; i < got.depth.size(); ++i) {
-                        got.depth[i] = i % 5 == 2 ? std::nanf("") : depth(random);
-                        got.weight1[i] = got.weight2[i] = -1.0f;
-                    }
-                    expected = got;
-                    std::vector<int> begin_got(static_cast<std::size_t>(rows), 100), end_got(begin_got.size(), 0);
-                    std::vector<int> begin_expected = begin_got, end_expected = end_got;
+        int triangles = 0, on_edges = 0;
+        std::vector<int> covered_at(9, 0);  // covered pixels by column within the box
+        std::vector<int> spans(9, 0);
+        while (triangles < 6000) {
+            litkit::kernels::RasterTriangle t{};
+            const std::int32_t bx = base(random), by = base(random);
+            for (int k = 0; k < 3; ++k) {
+                t.x[k] = bx + extent(random);
+                t.y[k] = by + extent(random);
+                // Often on the half-pixel grid: corners on pixel centres and
+                // edges through them.
+                if (coin(random) != 0) t.x[k] = t.x[k] / (one / 2) * (one / 2);
+                if (coin(random) != 0) t.y[k] = t.y[k] / (one / 2) * (one / 2);
+            }
+            if (triangles % 8 == 0) {
+                // A top edge from pixel centre to pixel centre 8 pixels on:
+                // a box 9 pixels wide (the ninth, on the right corner, is
+                // never covered: a right edge passes through it).
+                t.x[0] = bx / one * one + one / 2;
+                t.y[0] = t.y[1] = by / one * one + one / 2;
+                t.x[1] = t.x[0] + 8 * one;
+                t.y[2] = t.y[0] + 1 + extent(random);
+            }
+            // At most 8 pixels across and down (the grid may have widened it).
+            const auto [min_fx, max_fx] = std::minmax({t.x[0], t.x[1], t.x[2]});
+            const auto [min_fy, max_fy] = std::minmax({t.y[0], t.y[1], t.y[2]});
+            if (max_fx - min_fx > 8 * one || max_fy - min_fy > 8 * one) continue;
+            std::int64_t area = std::int64_t{t.x[1] - t.x[0]} * (t.y[2] - t.y[0]) -
+                                std::int64_t{t.y[1] - t.y[0]} * (t.x[2] - t.x[0]);
+            if (area == 0) continue;
+            if (area < 0) {  // the rasterizer's order: a positive doubled area
+                std::swap(t.x[1], t.x[2]);
+                std::swap(t.y[1], t.y[2]);
+            }
+            // Its pixel box (centres i + 0.5 within the corners' range), the
+            // image starting at column and row 0.
+            const int left = std::max(0, static_cast<int>((min_fx - one / 2 + one - 1) >> 8));
+            const int right = static_cast<int>((max_fx - one / 2) >> 8);
+            const int top = std::max(0, static_cast<int>((min_fy - one / 2 + one - 1) >> 8));
+            const int bottom = static_cast<int>((max_fy - one / 2) >> 8);
+            if (left > right || top > bottom) continue;
+            t.min_x = static_cast<std::int16_t>(left);
+            t.max_x = static_cast<std::int16_t>(right);
+            t.min_y = static_cast<std::int16_t>(top);
+            t.max_y_small = static_cast<std::uint16_t>(bottom | 0x8000);
+            for (float& w : t.weight) w = weight(random);
+            // Sometimes the band starts below its first row.
+            const int first_row = top + (coin(random) == 0 ? std::uniform_int_distribution<int>(0, bottom - top)(random) : 0);
+            const int rows = bottom - first_row + 1;
+            const int span = right - left;
+            ++triangles;
+            ++spans[static_cast<std::size_t>(span)];
+
+            const std::size_t stride = static_cast<std::size_t>(right + 3);
+            VisibilityBuffers got(stride * static_cast<std::size_t>(rows)), expected = got;
+            for (std::size_t i = 0; i < got.depth.size(); ++i) {
+                got.depth[i] = i % 5 == 2 ? std::nanf("") : depth(random) * 1e-7f;
+                got.weight1[i] = got.weight2[i] = -1.0f;
+            }
+            expected = got;
+            std::vector<int> begin_got(static_cast<std::size_t>(rows), 100), end_got(begin_got.size(), 0);
+            std::vector<int> begin_expected = begin_got, end_expected = end_got;
 #if defined(__linux__)
-                    {
-                        // The same call on buffers that end at an inaccessible
-                        // page: it must not touch past them, and writes the same.
-                        GuardedCopy<float> depth_copy(got.depth), weight1_copy(got.weight1),
-                            weight2_copy(got.weight2);
-                        GuardedCopy<const void*> visible_copy(got.visible);
-                        GuardedCopy<int> begin_copy(begin_got), end_copy(end_got);
-                        set->visibility_small(t, depth_copy.data(), visible_copy.data(), weight1_copy.data(),
-                                              weight2_copy.data(), stride, begin_copy.data(), end_copy.data());
-                        VisibilityBuffers guarded = got;
-                        guarded.depth = depth_copy.values();
-                        guarded.weight1 = weight1_copy.values();
-                        guarded.weight2 = weight2_copy.values();
-                        guarded.visible = visible_copy.values();
-                        set->visibility_small(t, got.depth.data(), got.visible.data(), got.weight1.data(),
-                                              got.weight2.data(), stride, begin_got.data(), end_got.data());
-                        ASSERT_TRUE(guarded == got) << set->name << ": span " << span << ", rows " << rows;
-                        ASSERT_EQ(begin_copy.values(), begin_got);
-                        ASSERT_EQ(end_copy.values(), end_got);
-                    }
+            {
+                // The same call on buffers that end at an inaccessible page:
+                // it must not touch past them, and writes the same.
+                GuardedCopy<float> depth_copy(got.depth), weight1_copy(got.weight1), weight2_copy(got.weight2);
+                GuardedCopy<const void*> visible_copy(got.visible);
+                GuardedCopy<int> begin_copy(begin_got), end_copy(end_got);
+                set->visibility_small(t, first_row, rows, &triangle_tag, depth_copy.data(), visible_copy.data(),
+                                      weight1_copy.data(), weight2_copy.data(), stride, begin_copy.data(),
+                                      end_copy.data());
+                VisibilityBuffers guarded = got;
+                guarded.depth = depth_copy.values();
+                guarded.weight1 = weight1_copy.values();
+                guarded.weight2 = weight2_copy.values();
+                guarded.visible = visible_copy.values();
+                set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(), got.visible.data(),
+                                      got.weight1.data(), got.weight2.data(), stride, begin_got.data(),
+                                      end_got.data());
+                ASSERT_TRUE(guarded == got) << set->name << ": triangle " << triangles;
+                ASSERT_EQ(begin_copy.values(), begin_got);
+                ASSERT_EQ(end_copy.values(), end_got);
+            }
 #else
-                    set->visibility_small(t, got.depth.data(), got.visible.data(), got.weight1.data(),
-                                          got.weight2.data(), stride, begin_got.data(), end_got.data());
+            set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(), got.visible.data(),
+                                  got.weight1.data(), got.weight2.data(), stride, begin_got.data(), end_got.data());
 #endif
-                    for (int r = 0; r < rows; ++r) {
-                        for (int x = 0; x <= span; ++x) {
-                            std::int32_t e[3];
-                            bool inside = true;
-                            for (int k = 0; k < 3; ++k) {
-                                e[k] = t.origin[k] + r * t.step_y[k] + x * t.step_x[k];
-                                inside = inside && e[k] >= 0;
-                            }
-                            if (!inside) continue;
-                            if (x == 8) ++covered_ninth;
-                            begin_expected[r] = std::min(begin_expected[r], t.min_x + x);
-                            end_expected[r] = std::max(end_expected[r], t.min_x + x + 1);
-                            expect_pixel(static_cast<float>(e[0] - t.bias[0]) * t.weight[0],
-                                         static_cast<float>(e[1] - t.bias[1]) * t.weight[1],
-                                         static_cast<float>(e[2] - t.bias[2]) * t.weight[2], t.triangle,
-                                         expected, static_cast<std::size_t>(r) * stride +
-                                                       static_cast<std::size_t>(t.min_x + x));
-                        }
+            for (int r = 0; r < rows; ++r) {
+                for (int x = left; x <= right; ++x) {
+                    // The pixel centre in fixed point, and the rule.
+                    const std::int64_t px = std::int64_t{x} * one + one / 2;
+                    const std::int64_t py = std::int64_t{first_row + r} * one + one / 2;
+                    std::int64_t e[3];
+                    bool inside = true;
+                    for (int k = 0; k < 3; ++k) {
+                        const int a = (k + 1) % 3, b = (k + 2) % 3;
+                        const std::int64_t dx = t.x[b] - t.x[a], dy = t.y[b] - t.y[a];
+                        e[k] = dx * (py - t.y[a]) - dy * (px - t.x[a]);
+                        const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+                        inside = inside && (e[k] > 0 || (e[k] == 0 && top_left));
+                        on_edges += e[k] == 0;
                     }
-                    ASSERT_TRUE(got == expected) << set->name << ": span " << span << ", rows " << rows;
-                    ASSERT_EQ(begin_got, begin_expected) << set->name << ": span " << span << ", rows " << rows;
-                    ASSERT_EQ(end_got, end_expected) << set->name << ": span " << span << ", rows " << rows;
+                    if (!inside) continue;
+                    ++covered_at[static_cast<std::size_t>(x - left)];
+                    begin_expected[r] = std::min(begin_expected[r], x);
+                    end_expected[r] = std::max(end_expected[r], x + 1);
+                    expect_pixel(static_cast<float>(e[0]) * t.weight[0], static_cast<float>(e[1]) * t.weight[1],
+                                 static_cast<float>(e[2]) * t.weight[2], &triangle_tag, expected,
+                                 static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(x));
                 }
             }
+            ASSERT_TRUE(got == expected) << set->name << ": triangle " << triangles << ", span " << span
+                                         << ", rows " << rows;
+            ASSERT_EQ(begin_got, begin_expected) << set->name << ": triangle " << triangles;
+            ASSERT_EQ(end_got, end_expected) << set->name << ": triangle " << triangles;
         }
-        EXPECT_GT(covered_ninth, 50) << "the ninth pixel of a row was covered too rarely to test it";
+        for (int span = 0; span <= 8; ++span) EXPECT_GT(spans[static_cast<std::size_t>(span)], 20) << "span " << span;
+        for (int x = 0; x < 8; ++x)
+            EXPECT_GT(covered_at[static_cast<std::size_t>(x)], 20) << "pixel " << x << " of a box's row";
+        EXPECT_GT(on_edges, 1000) << "pixel centres on edges (the top-left rule) too rarely";
     }
     if (sets_with_kernel == 0) std::printf("no set on this CPU has visibility_small\n");
 }

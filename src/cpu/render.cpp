@@ -162,20 +162,7 @@ struct ShadeTriangle {
     bool clipped() const { return vertex[2] == clipped_piece; }
 };
 
-// What the visibility pass needs: fixed-point window coordinates and the
-// perspective weight of each corner, ordered so that its doubled area is
-// positive, and its pixel bounds (inclusive, inside the image: at most
-// 16384, so 16 bits).
-struct RasterTriangle {
-    std::array<std::int32_t, 3> x, y;
-    std::array<float, 3> weight;  // 1/w of each corner over the doubled area
-    std::int16_t min_x, max_x, min_y;
-    std::uint16_t max_y_small;  // max_y (≤ 16384) and, in the top bit, small()
-    int max_y() const { return max_y_small & 0x7fff; }
-    // At most small_triangle (in fixed point) wide and high: its edge
-    // functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its box).
-    bool small() const { return (max_y_small >> 15) != 0; }
-};
+using kernels::RasterTriangle;  // what the visibility pass needs of a triangle
 
 // A triangle ready to rasterize, as binned: setup copies it into every band
 // it may touch, so that a band's triangles are read in one stream, and the
@@ -757,6 +744,17 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const int y1 = std::min<int>(tri.max_y(), row_end - 1);
             if (y0 > y1) continue;
 
+            if (tri.small() && kernels.visibility_small) {
+                // The kernel set's lanes set up its edge functions and test
+                // a row (or two) at a time: the same pixels and values as below.
+                const std::size_t first_row = static_cast<std::size_t>(y0 - row_begin) * width;
+                kernels.visibility_small(tri, y0, y1 - y0 + 1, shade, &s.depth[first_row],
+                                         reinterpret_cast<const void**>(&s.visible[first_row]),
+                                         &s.weight1[first_row], &s.weight2[first_row], width,
+                                         &s.touched_begin[y0 - row_begin], &s.touched_end[y0 - row_begin]);
+                continue;
+            }
+
             // Edge k is opposite corner k: from corner k+1 to corner k+2.
             // E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) ≥ 0 inside.
             std::array<std::int64_t, 3> step_x, step_y, origin, bias;
@@ -779,28 +777,6 @@ void Renderer::Impl::rasterize_band(int band, BandScratch& s, Image& image) cons
             const float weight1 = tri.weight[1];
             const float weight2 = tri.weight[2];
 
-            if (tri.small() && kernels.visibility_small) {
-                // The same pixels and values as below, a row at a time in the
-                // kernel set's lanes.
-                kernels::SmallTriangle small;
-                for (int k = 0; k < 3; ++k) {
-                    small.origin[k] = static_cast<std::int32_t>(origin[k] + bias[k]);
-                    small.step_x[k] = static_cast<std::int32_t>(step_x[k]);
-                    small.step_y[k] = static_cast<std::int32_t>(step_y[k]);
-                    small.bias[k] = static_cast<std::int32_t>(bias[k]);
-                    small.weight[k] = tri.weight[k];
-                }
-                small.rows = y1 - y0 + 1;
-                small.span = tri.max_x - tri.min_x;
-                small.min_x = tri.min_x;
-                small.triangle = shade;
-                const std::size_t first_row = static_cast<std::size_t>(y0 - row_begin) * width;
-                kernels.visibility_small(small, &s.depth[first_row],
-                                         reinterpret_cast<const void**>(&s.visible[first_row]),
-                                         &s.weight1[first_row], &s.weight2[first_row], width,
-                                         &s.touched_begin[y0 - row_begin], &s.touched_end[y0 - row_begin]);
-                continue;
-            }
 #if defined(__SSE2__)
             if (tri.small()) {
                 // The same pixels and values as below, with the three edge

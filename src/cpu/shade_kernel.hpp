@@ -4,6 +4,7 @@
 // template text; `select_kernels` picks one at run time.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -75,21 +76,21 @@ struct ColorRun {
     float* b;
 };
 
-// A small triangle as its visibility pass sees it (render.cpp: at most 8
-// pixels across and down, so its edge functions fit 32 bits by far and
-// convert to float exactly): the biased edge functions at its box's first
-// pixel of its first row, their steps along a row and down, the bias (0 or
-// −1, the fill rule), the corners' weights, and where it goes.
-struct SmallTriangle {
-    std::int32_t origin[3];  // biased, at (min_x, first row)
-    std::int32_t step_x[3];
-    std::int32_t step_y[3];
-    std::int32_t bias[3];
-    float weight[3];
-    int rows;   // rows of the box within the band
-    int span;   // max_x − min_x: the box has span + 1 pixels a row (at most 9)
-    int min_x;  // the box's first column
-    const void* triangle;
+// A triangle as the visibility pass sees it (render.cpp's setup makes one
+// per front-facing triangle or clipped piece): fixed-point window
+// coordinates and the perspective weight of each corner, ordered so that
+// its doubled area is positive, and its pixel bounds (inclusive, inside the
+// image: at most 16384, so 16 bits).
+struct RasterTriangle {
+    std::array<std::int32_t, 3> x, y;
+    std::array<float, 3> weight;  // 1/w of each corner over the doubled area
+    std::int16_t min_x, max_x, min_y;
+    std::uint16_t max_y_small;  // max_y (≤ 16384) and, in the top bit, small()
+    int max_y() const { return max_y_small & 0x7fff; }
+    // At most small_triangle (render.cpp: 8 pixels, in fixed point) wide and
+    // high: its edge functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its
+    // box, and a few pixels' steps beyond) and convert to float exactly.
+    bool small() const { return (max_y_small >> 15) != 0; }
 };
 
 struct Kernels {
@@ -139,17 +140,22 @@ struct Kernels {
     void (*visibility_row)(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
                            std::size_t count, float* depth, const void** visible, const void* triangle,
                            float* weight1, float* weight2);
-    // The visibility pass of a small triangle, all its rows: the pixels of
-    // each row whose three biased edge functions are ≥ 0 are covered; each
-    // covered pixel gets the test and writes above (p_k from the unbiased
-    // edge functions); touched_begin/touched_end of the row widen to its
-    // covered pixels. The buffers and the touched arrays start at the
-    // triangle's first row (and column 0); `stride` is the buffers' row
-    // length. Null in the portable set, whose pixels render.cpp tests one
-    // at a time.
-    void (*visibility_small)(const SmallTriangle& triangle, float* depth, const void** visible,
-                             float* weight1, float* weight2, std::size_t stride, int* touched_begin,
-                             int* touched_end);
+    // The visibility pass of a small triangle (RasterTriangle::small()) on
+    // `rows` rows from pixel row `first_row` (within its box), columns
+    // min_x to max_x: its edge functions, edge k from corner k+1 to corner
+    // k+2, E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) at the
+    // pixel centres in fixed point, in 32 bits (exact for a small
+    // triangle); a pixel is covered where E + bias ≥ 0 for all three, bias
+    // 0 on a top or left edge (b.y < a.y, or b.y = a.y and b.x > a.x) and −1
+    // on others (the top-left rule). Each covered pixel gets the test and
+    // writes of visibility_row (p_k = float(E_k) · weight[k], `shade` to
+    // `visible`); touched_begin/touched_end of the row widen to its covered
+    // pixels. The buffers and the touched arrays start at row first_row
+    // (and column 0); `stride` is the buffers' row length. Null in the
+    // portable set, whose pixels render.cpp tests one at a time.
+    void (*visibility_small)(const RasterTriangle& triangle, int first_row, int rows, const void* shade,
+                             float* depth, const void** visible, float* weight1, float* weight2,
+                             std::size_t stride, int* touched_begin, int* touched_end);
 };
 
 // visibility_row one pixel at a time: the portable set's, and the other

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "cpu/shade_kernel_impl.hpp"
+#include "cpu/small_triangle.hpp"
 
 namespace litkit::kernels {
 
@@ -59,26 +60,29 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
 }
 
 // visibility_small eight pixels of a row at a time (a row has at most 9).
-void visibility_small(const SmallTriangle& t, float* depth, const void** visible, float* weight1,
-                      float* weight2, std::size_t stride, int* touched_begin, int* touched_end) {
+void visibility_small(const RasterTriangle& t, int first_row, int rows, const void* shade, float* depth,
+                      const void** visible, float* weight1, float* weight2, std::size_t stride,
+                      int* touched_begin, int* touched_end) {
+    const SmallEdges edges = small_edges(t, first_row);
+    const int span = t.max_x - t.min_x;
     const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     __m256i along[3], bias[3];
     __m256 w[3];
     for (int k = 0; k < 3; ++k) {
-        along[k] = _mm256_mullo_epi32(lane, _mm256_set1_epi32(t.step_x[k]));
-        bias[k] = _mm256_set1_epi32(t.bias[k]);
+        along[k] = _mm256_mullo_epi32(lane, _mm256_set1_epi32(edges.step_x[k]));
+        bias[k] = _mm256_set1_epi32(edges.bias[k]);
         w[k] = _mm256_set1_ps(t.weight[k]);
     }
-    const __m256i tri = _mm256_set1_epi64x(static_cast<long long>(reinterpret_cast<std::intptr_t>(t.triangle)));
-    std::int32_t row_origin[3] = {t.origin[0], t.origin[1], t.origin[2]};
-    for (int row = 0; row < t.rows; ++row) {
+    const __m256i tri = _mm256_set1_epi64x(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
+    std::int32_t row_origin[3] = {edges.origin[0], edges.origin[1], edges.origin[2]};
+    for (int row = 0; row < rows; ++row) {
         unsigned row_covered = 0;  // bit x: pixel min_x + x is covered
-        for (int first = 0; first <= t.span; first += 8) {
+        for (int first = 0; first <= span; first += 8) {
             __m256i e[3];
             // A lane is out where some edge function is < 0 or it is past the box.
-            __m256i out = _mm256_cmpgt_epi32(lane, _mm256_set1_epi32(t.span - first));
+            __m256i out = _mm256_cmpgt_epi32(lane, _mm256_set1_epi32(span - first));
             for (int k = 0; k < 3; ++k) {
-                e[k] = _mm256_add_epi32(_mm256_set1_epi32(row_origin[k] + first * t.step_x[k]), along[k]);
+                e[k] = _mm256_add_epi32(_mm256_set1_epi32(row_origin[k] + first * edges.step_x[k]), along[k]);
                 out = _mm256_or_si256(out, e[k]);  // the sign bit: < 0
             }
             const unsigned covered = ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(out))) & 0xffu;
@@ -105,7 +109,7 @@ void visibility_small(const SmallTriangle& t, float* depth, const void** visible
                                        tri);
             }
         }
-        for (int k = 0; k < 3; ++k) row_origin[k] += t.step_y[k];
+        for (int k = 0; k < 3; ++k) row_origin[k] += edges.step_y[k];
         if (row_covered) {
             touched_begin[row] = std::min(touched_begin[row], t.min_x + __builtin_ctz(row_covered));
             touched_end[row] = std::max(touched_end[row], t.min_x + 32 - __builtin_clz(row_covered));

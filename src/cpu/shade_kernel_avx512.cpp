@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "cpu/shade_kernel_impl.hpp"
+#include "cpu/small_triangle.hpp"
 
 namespace litkit::kernels {
 
@@ -52,37 +53,38 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
 
 // visibility_small of a box at most 8 pixels wide, two rows at a time:
 // lanes 0-7 the first row's pixels, lanes 8-15 the next row's.
-void visibility_small_pairs(const SmallTriangle& t, float* depth, const void** visible,
-                            float* weight1, float* weight2, std::size_t stride, int* touched_begin,
-                            int* touched_end) {
+void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, int rows, const void* shade,
+                            float* depth, const void** visible, float* weight1, float* weight2,
+                            std::size_t stride, int* touched_begin, int* touched_end) {
+    const int span = t.max_x - t.min_x;
     const __m512i column = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
     const __m512i second = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
-    const __mmask16 in_box = _mm512_cmple_epi32_mask(column, _mm512_set1_epi32(t.span));
+    const __mmask16 in_box = _mm512_cmple_epi32_mask(column, _mm512_set1_epi32(span));
     __m512i offset[3], bias[3];
     __m512 w[3];
     for (int k = 0; k < 3; ++k) {
-        offset[k] = _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(t.step_x[k])),
-                                     _mm512_mullo_epi32(second, _mm512_set1_epi32(t.step_y[k])));
-        bias[k] = _mm512_set1_epi32(t.bias[k]);
+        offset[k] = _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(edges.step_x[k])),
+                                     _mm512_mullo_epi32(second, _mm512_set1_epi32(edges.step_y[k])));
+        bias[k] = _mm512_set1_epi32(edges.bias[k]);
         w[k] = _mm512_set1_ps(t.weight[k]);
     }
-    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(t.triangle)));
-    std::int32_t row_origin[3] = {t.origin[0], t.origin[1], t.origin[2]};
-    for (int row = 0; row < t.rows; row += 2) {
+    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
+    std::int32_t row_origin[3] = {edges.origin[0], edges.origin[1], edges.origin[2]};
+    for (int row = 0; row < rows; row += 2) {
         __m512i e[3];
         // The second row only where there is one.
-        __mmask16 covered = row + 1 < t.rows ? in_box : static_cast<__mmask16>(in_box & 0xffu);
+        __mmask16 covered = row + 1 < rows ? in_box : static_cast<__mmask16>(in_box & 0xffu);
         for (int k = 0; k < 3; ++k) {
             e[k] = _mm512_add_epi32(_mm512_set1_epi32(row_origin[k]), offset[k]);
             covered = _mm512_mask_cmpge_epi32_mask(covered, e[k], _mm512_setzero_si512());
-            row_origin[k] += 2 * t.step_y[k];
+            row_origin[k] += 2 * edges.step_y[k];
         }
         if (!covered) continue;
         const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
         // The second row's place; where there is none (its lanes are all
         // masked off), the first row's, so that no address is past the
         // buffers.
-        const std::size_t next = row + 1 < t.rows ? at + stride : at;
+        const std::size_t next = row + 1 < rows ? at + stride : at;
         const auto first_half = static_cast<__mmask8>(covered), second_half = static_cast<__mmask8>(covered >> 8);
         const __m512 p0 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[0], bias[0])), w[0]);
         const __m512 p1 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[1], bias[1])), w[1]);
@@ -123,30 +125,34 @@ void visibility_small_pairs(const SmallTriangle& t, float* depth, const void** v
 
 // visibility_small a row at a time: a row's (at most 9) pixels in the
 // lanes of one vector; boxes at most 8 pixels wide two rows at a time.
-void visibility_small(const SmallTriangle& t, float* depth, const void** visible, float* weight1,
-                      float* weight2, std::size_t stride, int* touched_begin, int* touched_end) {
-    if (t.span < 8 && t.rows > 1) {
-        visibility_small_pairs(t, depth, visible, weight1, weight2, stride, touched_begin, touched_end);
+void visibility_small(const RasterTriangle& t, int first_row, int rows, const void* shade, float* depth,
+                      const void** visible, float* weight1, float* weight2, std::size_t stride,
+                      int* touched_begin, int* touched_end) {
+    const SmallEdges edges = small_edges(t, first_row);
+    const int span = t.max_x - t.min_x;
+    if (span < 8 && rows > 1) {
+        visibility_small_pairs(edges, t, rows, shade, depth, visible, weight1, weight2, stride, touched_begin,
+                               touched_end);
         return;
     }
     const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    const __mmask16 in_box = _mm512_cmple_epi32_mask(lane, _mm512_set1_epi32(t.span));
+    const __mmask16 in_box = _mm512_cmple_epi32_mask(lane, _mm512_set1_epi32(span));
     __m512i along[3], bias[3];
     __m512 w[3];
     for (int k = 0; k < 3; ++k) {
-        along[k] = _mm512_mullo_epi32(lane, _mm512_set1_epi32(t.step_x[k]));
-        bias[k] = _mm512_set1_epi32(t.bias[k]);
+        along[k] = _mm512_mullo_epi32(lane, _mm512_set1_epi32(edges.step_x[k]));
+        bias[k] = _mm512_set1_epi32(edges.bias[k]);
         w[k] = _mm512_set1_ps(t.weight[k]);
     }
-    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(t.triangle)));
-    std::int32_t row_origin[3] = {t.origin[0], t.origin[1], t.origin[2]};
-    for (int row = 0; row < t.rows; ++row) {
+    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
+    std::int32_t row_origin[3] = {edges.origin[0], edges.origin[1], edges.origin[2]};
+    for (int row = 0; row < rows; ++row) {
         __m512i e[3];
         __mmask16 covered = in_box;
         for (int k = 0; k < 3; ++k) {
             e[k] = _mm512_add_epi32(_mm512_set1_epi32(row_origin[k]), along[k]);
             covered = _mm512_mask_cmpge_epi32_mask(covered, e[k], _mm512_setzero_si512());
-            row_origin[k] += t.step_y[k];
+            row_origin[k] += edges.step_y[k];
         }
         if (!covered) continue;
         const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
