@@ -7,6 +7,9 @@
 #include <glm/mat3x3.hpp>
 
 #include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -76,7 +79,10 @@ glm::mat4 object_to_world(const SceneObject& object) {
     return glm::scale(transform, glm::vec3(object.scale));
 }
 
-Mesh object_mesh(const SceneObject& object) {
+namespace {
+
+// The object's mesh in local coordinates, built.
+Mesh build_object_mesh(const SceneObject& object) {
     struct Build {
         Mesh operator()(const CubeShape& cube) const { return make_cube(cube.size); }
         Mesh operator()(const SphereShape& sphere) const {
@@ -101,6 +107,87 @@ Mesh object_mesh(const SceneObject& object) {
     };
     return std::visit(Build{}, object.shape);
 }
+
+// The last few built-in shapes built, by their parameters (which alone
+// decide the mesh: make_sphere and the others are pure functions of them).
+class ShapeCache {
+  public:
+    // The mesh of `shape` if kept, else `build`'s, then kept.
+    template <class Build>
+    std::shared_ptr<const Mesh> find_or_build(const Shape& shape, Build build) {
+        {
+            const std::lock_guard lock(mutex_);
+            for (const auto& [key, mesh] : entries_)
+                if (same_parameters(key, shape)) return mesh;
+        }
+        // Built outside the lock: another thread's shape need not wait.
+        auto mesh = std::make_shared<const Mesh>(build());
+        const std::lock_guard lock(mutex_);
+        entries_.emplace_front(shape, mesh);
+        if (entries_.size() > capacity) entries_.pop_back();
+        return mesh;
+    }
+
+  private:
+    // Kept meshes: a 261k-triangle sphere is 4.7 MB; the viewer's edits
+    // come and go.
+    static constexpr std::size_t capacity = 4;
+
+    // The same built-in shape with the same parameters (every field of it:
+    // the static_asserts notice a field added to one).
+    static bool same_parameters(const Shape& a, const Shape& b) {
+        struct Same {
+            const Shape& other;
+            bool operator()(const CubeShape& c) const {
+                static_assert(sizeof(CubeShape) == sizeof(float));
+                const auto* o = std::get_if<CubeShape>(&other);
+                return o && o->size == c.size;
+            }
+            bool operator()(const SphereShape& s) const {
+                static_assert(sizeof(SphereShape) == sizeof(float) + 2 * sizeof(int));
+                const auto* o = std::get_if<SphereShape>(&other);
+                return o && o->radius == s.radius && o->segments == s.segments && o->rings == s.rings;
+            }
+            bool operator()(const TorusShape& t) const {
+                static_assert(sizeof(TorusShape) == 2 * sizeof(float) + 2 * sizeof(int));
+                const auto* o = std::get_if<TorusShape>(&other);
+                return o && o->major_radius == t.major_radius && o->minor_radius == t.minor_radius &&
+                       o->segments == t.segments && o->sides == t.sides;
+            }
+            bool operator()(const TeapotShape& t) const {
+                static_assert(sizeof(TeapotShape) == sizeof(float) + sizeof(int));
+                const auto* o = std::get_if<TeapotShape>(&other);
+                return o && o->size == t.size && o->subdivisions == t.subdivisions;
+            }
+            bool operator()(const MeshFileShape&) const { return false; }  // never kept
+            bool operator()(const MeshDataShape&) const { return false; }
+        };
+        return std::visit(Same{b}, a);
+    }
+
+    std::mutex mutex_;
+    std::deque<std::pair<Shape, std::shared_ptr<const Mesh>>> entries_;  // the latest first
+};
+
+ShapeCache& shape_cache() {
+    static ShapeCache cache;
+    return cache;
+}
+
+}  // namespace
+
+Mesh object_mesh(const SceneObject& object) {
+    if (std::holds_alternative<MeshFileShape>(object.shape) || std::holds_alternative<MeshDataShape>(object.shape))
+        return build_object_mesh(object);
+    return *shared_object_mesh(object);
+}
+
+std::shared_ptr<const Mesh> shared_object_mesh(const SceneObject& object) {
+    if (std::holds_alternative<MeshFileShape>(object.shape) || std::holds_alternative<MeshDataShape>(object.shape))
+        return std::make_shared<const Mesh>(build_object_mesh(object));
+    return shape_cache().find_or_build(object.shape, [&] { return build_object_mesh(object); });
+}
+
 
 namespace {
 
@@ -234,19 +321,24 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
                      const ParallelFor& parallel) {
-    Mesh mesh = object_mesh(object);
+    // The shared mesh, read; a copy where splitting normals adds positions.
+    const std::shared_ptr<const Mesh> shared = shared_object_mesh(object);
+    std::optional<Mesh> split;
     std::vector<glm::vec3> local_normals;
     const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
     if (options.normals == Normals::File) {
         // docs/spec.md §9.2: with the file's normals the crease angle is ignored.
-        split_by_corner_normals(mesh, file_corner_normals(mesh, object), local_normals);
+        split = *shared;
+        split_by_corner_normals(*split, file_corner_normals(*split, object), local_normals);
     } else if (creased) {
-        split_at_creases(mesh,
-                         creased_normals(mesh, options.normals, *options.crease_angle_degrees),
+        split = *shared;
+        split_at_creases(*split,
+                         creased_normals(*split, options.normals, *options.crease_angle_degrees),
                          local_normals);
     } else {
-        local_normals = vertex_normals(mesh, options.normals, parallel);
+        local_normals = vertex_normals(*shared, options.normals, parallel);
     }
+    const Mesh& mesh = split ? *split : *shared;
     const glm::mat4 model = object_to_world(object);
     const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
 
@@ -259,7 +351,7 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
         const float length = glm::length(n);
         world.normals[i] = length > 0.0f ? n / length : n;
     });
-    world.triangles = std::move(mesh.triangles);
+    world.triangles = split ? std::move(split->triangles) : shared->triangles;
     return world;
 }
 

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <unordered_map>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "litkit/shapes.hpp"
 #include "scene/float_range.hpp"
 #include "scene/validate_internal.hpp"
+#include "scene/world_mesh.hpp"
 
 namespace litkit {
 
@@ -505,9 +507,9 @@ private:
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             if (!shape_ok_[i]) continue;
             const SceneObject& object = scene_.objects[i];
-            Mesh mesh;
+            std::shared_ptr<const Mesh> built;  // shared with the renderer (scene/world_mesh.hpp)
             try {
-                mesh = object_mesh(object);
+                built = shared_object_mesh(object);
             } catch (const IoError& failure) {
                 // Point at the scene's `file` key, and keep the line inside
                 // the mesh file where reading stopped.
@@ -522,6 +524,7 @@ private:
                 }
                 throw IoError(failure.path(), failure.reason(), scene_place);
             }
+            const Mesh& mesh = *built;
             check_orientation(i, mesh);
             // docs/spec.md §9.2: "file" normals need one at every face corner.
             const auto* file = std::get_if<MeshFileShape>(&object.shape);
