@@ -592,7 +592,7 @@ TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
 }
 
 // Issue 16: a built-in shape is built once for load_scene's validation and
-// the renderer of the same scene (scene/world_mesh.hpp's shared_object_mesh).
+// the renderer of the same scene (scene/world_mesh.hpp's keep_built_mesh).
 namespace {
 
 litkit::SceneObject sphere_object(int segments, int rings) {
@@ -601,64 +601,55 @@ litkit::SceneObject sphere_object(int segments, int rings) {
     return object;
 }
 
-bool same_mesh(const litkit::Mesh& a, const litkit::Mesh& b) {
-    return a.positions.size() == b.positions.size() && a.triangles == b.triangles &&
-           std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0;
+// A mesh no shape makes: where world_mesh uses it, it was taken.
+litkit::Mesh marker_mesh() {
+    litkit::Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    return mesh;
 }
 
 }  // namespace
 
-TEST(SharedMeshes, TheSameShapeIsBuiltOnceAndIsMakeShapesMesh) {
-    const auto first = litkit::shared_object_mesh(sphere_object(40, 20));
-    const auto again = litkit::shared_object_mesh(sphere_object(40, 20));
-    EXPECT_EQ(first.get(), again.get());
-    EXPECT_TRUE(same_mesh(*first, litkit::make_sphere(1.5f, 40, 20)));
-    // Any parameter differing is another mesh.
-    const auto other = litkit::shared_object_mesh(sphere_object(40, 21));
-    EXPECT_NE(other.get(), first.get());
-    EXPECT_TRUE(same_mesh(*other, litkit::make_sphere(1.5f, 40, 21)));
-    litkit::SceneObject torus;
-    torus.shape = litkit::TorusShape{.segments = 40, .sides = 20};
-    EXPECT_TRUE(same_mesh(*litkit::shared_object_mesh(torus),
-                          litkit::make_torus(1.0f, 0.25f, 40, 20)));
-    // world_mesh and object_mesh give what they gave before the sharing.
-    EXPECT_TRUE(same_mesh(litkit::object_mesh(sphere_object(40, 20)), litkit::make_sphere(1.5f, 40, 20)));
+TEST(KeptMeshes, WorldMeshTakesTheMeshKeptForItsShapeOnce) {
+    litkit::keep_built_mesh(sphere_object(40, 20).shape, marker_mesh());
+    // Another parameter: not that mesh.
+    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 21)).triangles, litkit::make_sphere(1.5f, 40, 21).triangles);
+    // The same parameters: taken (the marker's one triangle) ...
+    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles.size(), 1u);
+    // ... once: the next is built.
     EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles, litkit::make_sphere(1.5f, 40, 20).triangles);
 }
 
-TEST(SharedMeshes, OnlyTheLastFewShapesAreKept) {
-    const auto first = litkit::shared_object_mesh(sphere_object(30, 10));
-    const litkit::Mesh* const address = first.get();
-    for (int rings = 11; rings <= 14; ++rings) litkit::shared_object_mesh(sphere_object(30, rings));
-    // Four others since: no longer kept, built again (the same mesh).
-    const auto rebuilt = litkit::shared_object_mesh(sphere_object(30, 10));
-    EXPECT_NE(rebuilt.get(), address);
-    EXPECT_TRUE(same_mesh(*rebuilt, *first));
+TEST(KeptMeshes, OnlyTheLastFourAreKept) {
+    litkit::keep_built_mesh(sphere_object(30, 10).shape, marker_mesh());
+    for (int rings = 11; rings <= 14; ++rings)
+        litkit::keep_built_mesh(sphere_object(30, rings).shape, litkit::make_sphere(1.5f, 30, rings));
+    EXPECT_EQ(litkit::world_mesh(sphere_object(30, 10)).triangles, litkit::make_sphere(1.5f, 30, 10).triangles);
+    EXPECT_EQ(litkit::world_mesh(sphere_object(30, 14)).triangles, litkit::make_sphere(1.5f, 30, 14).triangles);
 }
 
-TEST(SharedMeshes, AMeshFileIsReadAgainEveryTime) {
-    const fs::path file = fs::temp_directory_path() / "litkit-shared-mesh-test.obj";
-    {
-        std::ofstream out(file);
-        out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    }
-    litkit::SceneObject object;
-    object.shape = litkit::MeshFileShape{.file = file};
-    EXPECT_EQ(litkit::shared_object_mesh(object)->triangles.size(), 1u);
+TEST(KeptMeshes, MeshFilesAreNotKept) {
+    const fs::path file = fs::temp_directory_path() / "litkit-kept-mesh-test.obj";
     {
         std::ofstream out(file);
         out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
     }
-    EXPECT_EQ(litkit::shared_object_mesh(object)->triangles.size(), 2u);
+    litkit::SceneObject object;
+    object.shape = litkit::MeshFileShape{.file = file};
+    litkit::keep_built_mesh(object.shape, marker_mesh());
+    EXPECT_EQ(litkit::world_mesh(object).triangles.size(), 2u);  // read from the file
     fs::remove(file);
 }
 
-TEST(SharedMeshes, ThreadsAskingForOneShapeGetTheSameMesh) {
-    std::vector<std::shared_ptr<const litkit::Mesh>> got(4);
-    std::vector<std::thread> threads;
-    for (std::size_t t = 0; t < got.size(); ++t)
-        threads.emplace_back([&got, t] { got[t] = litkit::shared_object_mesh(sphere_object(64, 33)); });
-    for (std::thread& thread : threads) thread.join();
-    const litkit::Mesh expected = litkit::make_sphere(1.5f, 64, 33);
-    for (const auto& mesh : got) EXPECT_TRUE(same_mesh(*mesh, expected));
+TEST(KeptMeshes, LoadingASceneKeepsItsShapesForTheRenderer) {
+    // load_scene validates (building the sphere); the renderer takes that
+    // mesh: the picture is the one of a scene built without keeping.
+    const fs::path file = fs::path(LITKIT_SOURCE_DIR) / "examples" / "sphere.toml";
+    litkit::Scene loaded = litkit::load_scene(std::span(&file, 1));
+    loaded.output.width = 160;
+    loaded.output.height = 120;
+    const litkit::Image kept = litkit::render(loaded);
+    const litkit::Image built = litkit::render(loaded);  // nothing kept any more
+    EXPECT_EQ(kept.rgb, built.rgb);
 }

@@ -8,7 +8,6 @@
 
 #include <cstdint>
 #include <deque>
-#include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -81,56 +80,31 @@ glm::mat4 object_to_world(const SceneObject& object) {
 
 namespace {
 
-// The object's mesh in local coordinates, built.
-Mesh build_object_mesh(const SceneObject& object) {
-    struct Build {
-        Mesh operator()(const CubeShape& cube) const { return make_cube(cube.size); }
-        Mesh operator()(const SphereShape& sphere) const {
-            return make_sphere(sphere.radius, sphere.segments, sphere.rings);
-        }
-        Mesh operator()(const TorusShape& torus) const {
-            return make_torus(torus.major_radius, torus.minor_radius, torus.segments, torus.sides);
-        }
-        Mesh operator()(const TeapotShape& teapot) const {
-            return make_teapot(teapot.size, teapot.subdivisions);
-        }
-        Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
-        Mesh operator()(const MeshDataShape& data) const {
-            if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
-            if (std::string problem = check_mesh_data(*data.mesh); !problem.empty())
-                throw ArgumentError("in-memory mesh: " + problem);
-            Mesh mesh;
-            mesh.positions = data.mesh->positions;
-            mesh.triangles = data.mesh->triangles;
+// Built-in shapes' meshes kept for the next world_mesh of the same shape
+// (keep_built_mesh): a built-in shape's mesh is a function of its
+// parameters alone.
+class KeptMeshes {
+  public:
+    void keep(const Shape& shape, Mesh mesh) {
+        const std::lock_guard lock(mutex_);
+        entries_.emplace_front(shape, std::move(mesh));
+        if (entries_.size() > capacity) entries_.pop_back();
+    }
+    std::optional<Mesh> take(const Shape& shape) {
+        const std::lock_guard lock(mutex_);
+        for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
+            if (!same_parameters(entry->first, shape)) continue;
+            Mesh mesh = std::move(entry->second);
+            entries_.erase(entry);
             return mesh;
         }
-    };
-    return std::visit(Build{}, object.shape);
-}
-
-// The last few built-in shapes built, by their parameters (which alone
-// decide the mesh: make_sphere and the others are pure functions of them).
-class ShapeCache {
-  public:
-    // The mesh of `shape` if kept, else `build`'s, then kept.
-    template <class Build>
-    std::shared_ptr<const Mesh> find_or_build(const Shape& shape, Build build) {
-        {
-            const std::lock_guard lock(mutex_);
-            for (const auto& [key, mesh] : entries_)
-                if (same_parameters(key, shape)) return mesh;
-        }
-        // Built outside the lock: another thread's shape need not wait.
-        auto mesh = std::make_shared<const Mesh>(build());
-        const std::lock_guard lock(mutex_);
-        entries_.emplace_front(shape, mesh);
-        if (entries_.size() > capacity) entries_.pop_back();
-        return mesh;
+        return std::nullopt;
     }
 
   private:
-    // Kept meshes: a 261k-triangle sphere is 4.7 MB; the viewer's edits
-    // come and go.
+    // A scene's objects are validated and then drawn one scene at a time;
+    // a few cover a scene of several shapes, and a mesh nobody takes (a
+    // `litkit check`, a scene loaded and not drawn) does not stay for long.
     static constexpr std::size_t capacity = 4;
 
     // The same built-in shape with the same parameters (every field of it:
@@ -166,28 +140,46 @@ class ShapeCache {
     }
 
     std::mutex mutex_;
-    std::deque<std::pair<Shape, std::shared_ptr<const Mesh>>> entries_;  // the latest first
+    std::deque<std::pair<Shape, Mesh>> entries_;  // the latest first
 };
 
-ShapeCache& shape_cache() {
-    static ShapeCache cache;
-    return cache;
+KeptMeshes& kept_meshes() {
+    static KeptMeshes kept;
+    return kept;
 }
 
 }  // namespace
 
 Mesh object_mesh(const SceneObject& object) {
-    if (std::holds_alternative<MeshFileShape>(object.shape) || std::holds_alternative<MeshDataShape>(object.shape))
-        return build_object_mesh(object);
-    return *shared_object_mesh(object);
+    struct Build {
+        Mesh operator()(const CubeShape& cube) const { return make_cube(cube.size); }
+        Mesh operator()(const SphereShape& sphere) const {
+            return make_sphere(sphere.radius, sphere.segments, sphere.rings);
+        }
+        Mesh operator()(const TorusShape& torus) const {
+            return make_torus(torus.major_radius, torus.minor_radius, torus.segments, torus.sides);
+        }
+        Mesh operator()(const TeapotShape& teapot) const {
+            return make_teapot(teapot.size, teapot.subdivisions);
+        }
+        Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
+        Mesh operator()(const MeshDataShape& data) const {
+            if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
+            if (std::string problem = check_mesh_data(*data.mesh); !problem.empty())
+                throw ArgumentError("in-memory mesh: " + problem);
+            Mesh mesh;
+            mesh.positions = data.mesh->positions;
+            mesh.triangles = data.mesh->triangles;
+            return mesh;
+        }
+    };
+    return std::visit(Build{}, object.shape);
 }
 
-std::shared_ptr<const Mesh> shared_object_mesh(const SceneObject& object) {
-    if (std::holds_alternative<MeshFileShape>(object.shape) || std::holds_alternative<MeshDataShape>(object.shape))
-        return std::make_shared<const Mesh>(build_object_mesh(object));
-    return shape_cache().find_or_build(object.shape, [&] { return build_object_mesh(object); });
+void keep_built_mesh(const Shape& shape, Mesh mesh) {
+    if (std::holds_alternative<MeshFileShape>(shape) || std::holds_alternative<MeshDataShape>(shape)) return;
+    kept_meshes().keep(shape, std::move(mesh));
 }
-
 
 namespace {
 
@@ -321,24 +313,21 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
                      const ParallelFor& parallel) {
-    // The shared mesh, read; a copy where splitting normals adds positions.
-    const std::shared_ptr<const Mesh> shared = shared_object_mesh(object);
-    std::optional<Mesh> split;
+    // The mesh load_scene's validation built for this shape, else a new one.
+    std::optional<Mesh> kept = kept_meshes().take(object.shape);
+    Mesh mesh = kept ? std::move(*kept) : object_mesh(object);
     std::vector<glm::vec3> local_normals;
     const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
     if (options.normals == Normals::File) {
         // docs/spec.md §9.2: with the file's normals the crease angle is ignored.
-        split = *shared;
-        split_by_corner_normals(*split, file_corner_normals(*split, object), local_normals);
+        split_by_corner_normals(mesh, file_corner_normals(mesh, object), local_normals);
     } else if (creased) {
-        split = *shared;
-        split_at_creases(*split,
-                         creased_normals(*split, options.normals, *options.crease_angle_degrees),
+        split_at_creases(mesh,
+                         creased_normals(mesh, options.normals, *options.crease_angle_degrees),
                          local_normals);
     } else {
-        local_normals = vertex_normals(*shared, options.normals, parallel);
+        local_normals = vertex_normals(mesh, options.normals, parallel);
     }
-    const Mesh& mesh = split ? *split : *shared;
     const glm::mat4 model = object_to_world(object);
     const glm::mat3 rotation = glm::mat3(model) * (1.0f / object.scale);
 
@@ -351,7 +340,7 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
         const float length = glm::length(n);
         world.normals[i] = length > 0.0f ? n / length : n;
     });
-    world.triangles = split ? std::move(split->triangles) : shared->triangles;
+    world.triangles = std::move(mesh.triangles);
     return world;
 }
 

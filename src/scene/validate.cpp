@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <memory>
 #include <unordered_map>
 #include <optional>
 #include <string>
@@ -507,9 +506,9 @@ private:
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             if (!shape_ok_[i]) continue;
             const SceneObject& object = scene_.objects[i];
-            std::shared_ptr<const Mesh> built;  // shared with the renderer (scene/world_mesh.hpp)
+            Mesh mesh;
             try {
-                built = shared_object_mesh(object);
+                mesh = object_mesh(object);
             } catch (const IoError& failure) {
                 // Point at the scene's `file` key, and keep the line inside
                 // the mesh file where reading stopped.
@@ -524,7 +523,6 @@ private:
                 }
                 throw IoError(failure.path(), failure.reason(), scene_place);
             }
-            const Mesh& mesh = *built;
             check_orientation(i, mesh);
             // docs/spec.md §9.2: "file" normals need one at every face corner.
             const auto* file = std::get_if<MeshFileShape>(&object.shape);
@@ -537,6 +535,8 @@ private:
             hull.reserve(mesh.positions.size());
             for (const glm::vec3& p : mesh.positions)
                 hull.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
+            // For the renderer of this scene, which would build it again.
+            keep_built_mesh(object.shape, std::move(mesh));
         }
     }
 

@@ -4,19 +4,18 @@
 // space. The same mesh, bit for bit.
 #pragma once
 
-#include <memory>
-
 #include "core/parallel.hpp"
 #include "litkit/scene.hpp"
 
 namespace litkit {
 
-// object_mesh, shared: a built-in shape (cube, sphere, torus, teapot) is
-// built once for all callers asking for it with the same parameters while
-// it is among the last few asked for (load_scene's validation and the
-// renderer of the same scene, issue 16); a mesh file or in-memory mesh is
-// built for each call (a file can change between two reads). Thread-safe.
-std::shared_ptr<const Mesh> shared_object_mesh(const SceneObject& object);
+// Keeps a built-in shape's (cube, sphere, torus, teapot) just-built local
+// mesh for the next world_mesh of an object of the same shape, which takes
+// it instead of building it again: load_scene's validation builds every
+// object's mesh, and the renderer of the same scene builds it again
+// (issue 16). The last four kept stay; mesh files and in-memory meshes are
+// not kept (a file can change between two reads). Thread-safe.
+void keep_built_mesh(const Shape& shape, Mesh mesh);
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
                      const ParallelFor& parallel);
