@@ -12,12 +12,10 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "core/parallel.hpp"                // internal (src/)
