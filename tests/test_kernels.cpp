@@ -20,6 +20,8 @@
 #include <unistd.h>
 #endif
 
+#include <glm/geometric.hpp>
+
 #include "cpu/shade_kernel.hpp"
 #include "litkit/lighting.hpp"  // to_pixel
 #include "cpu/shade_kernel_impl.hpp"  // equations::pow of batches
@@ -162,6 +164,56 @@ void expect_pixel(float p0, float p1, float p2, const void* triangle, Visibility
 }
 
 }  // namespace
+
+// shade_phong lights each pixel at the point on its ray (RowRays) at its
+// view depth: against the scalar lighting (equations::shade_scalar) at
+// p = eye + w · (centre + k · across), k = first_k + 2i, on every length.
+// The rays fan out fast and the light is near, so a pixel's p taken from a
+// neighbour's ray (or the wrong depth) changes its colour far beyond the
+// tolerance, which only covers SIMD against scalar roundings.
+TEST(Kernels, ShadePhongLightsThePointOnEachPixelsRay) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> depth(2.0f, 4.0f), tilt(-0.3f, 0.3f);
+    const litkit::kernels::RowRays rays{{0.0f, 0.5f, 5.0f}, {0.0f, -0.1f, -1.0f}, {0.004f, 0.001f, 0.0f}};
+    const std::vector<litkit::equations::PreparedLight> lights{
+        litkit::equations::prepare_light(litkit::Light{litkit::PointLight{{0.3f, 1.0f, 2.5f}}, {1, 1, 1}, 3.0f})};
+    litkit::Material material;
+    material.shininess = 40.0f;
+    material.ks = 0.6f;
+    for (const Kernels* set : runnable_sets()) {
+        std::printf("checking the %s set\n", set->name);
+        for (std::size_t count = 1; count <= 40; ++count) {
+            const float first_k = -37.0f + static_cast<float>(count);
+            std::vector<float> w(count), normals[3], r(count), g(count), b(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                w[i] = depth(random);
+                const glm::vec3 n = glm::normalize(glm::vec3(tilt(random), tilt(random), 1.0f));
+                for (int c = 0; c < 3; ++c) normals[c].push_back(n[c]);
+            }
+            set->shade_phong(litkit::Reflection::Phong, lights, material,
+                             {&rays, first_k, w.data(), normals[0].data(), normals[1].data(), normals[2].data(), count},
+                             {r.data(), g.data(), b.data()});
+            for (std::size_t i = 0; i < count; ++i) {
+                const float k = first_k + 2.0f * static_cast<float>(i);
+                glm::vec3 p;
+                for (int c = 0; c < 3; ++c) {
+                    volatile float along = k * rays.across[c];
+                    volatile float d = along + rays.centre[c];
+                    volatile float step = w[i] * d;
+                    p[c] = rays.eye[c] + step;
+                }
+                const glm::vec3 n(normals[0][i], normals[1][i], normals[2][i]);
+                const glm::vec3 expected = litkit::equations::shade_scalar(
+                    litkit::Reflection::Phong, lights, litkit::equations::splat<float>(material), p, n,
+                    glm::vec3(rays.eye[0], rays.eye[1], rays.eye[2]));
+                const float got[3] = {r[i], g[i], b[i]};
+                for (int c = 0; c < 3; ++c)
+                    ASSERT_NEAR(got[c], expected[c], 1e-5f + 1e-5f * std::abs(expected[c]))
+                        << set->name << ": " << count << " pixels, pixel " << i << ", channel " << c;
+            }
+        }
+    }
+}
 
 // encode against litkit::to_pixel, the public scalar rule (docs/spec.md §4
 // pixel values), on every length: intensities in and out of [0, 1], NaN,
