@@ -40,14 +40,16 @@ FileLoc Scene::location_of(std::string_view path) const {
     return found == locations.end() ? FileLoc{} : found->second;
 }
 
-bool same_geometry(const SceneObject& a, const SceneObject& b) {
-    if (a.position != b.position || a.rotation_degrees != b.rotation_degrees || a.scale != b.scale)
-        return false;
-    if (a.shape.index() != b.shape.index()) return false;
+namespace {
+
+// The same shape with the same parameters (a mesh in memory: the same one,
+// or equal positions and triangles).
+bool same_shape(const Shape& a, const Shape& b) {
+    if (a.index() != b.index()) return false;
     return std::visit(
         [&](const auto& shape) {
             using S = std::decay_t<decltype(shape)>;
-            const S& other = std::get<S>(b.shape);
+            const S& other = std::get<S>(b);
             if constexpr (std::is_same_v<S, CubeShape>) return shape.size == other.size;
             else if constexpr (std::is_same_v<S, SphereShape>)
                 return shape.radius == other.radius && shape.segments == other.segments &&
@@ -65,7 +67,15 @@ bool same_geometry(const SceneObject& a, const SceneObject& b) {
                        (shape.mesh && other.mesh && shape.mesh->positions == other.mesh->positions &&
                         shape.mesh->triangles == other.mesh->triangles);
         },
-        a.shape);
+        a);
+}
+
+}  // namespace
+
+bool same_geometry(const SceneObject& a, const SceneObject& b) {
+    if (a.position != b.position || a.rotation_degrees != b.rotation_degrees || a.scale != b.scale)
+        return false;
+    return same_shape(a.shape, b.shape);
 }
 
 glm::mat4 object_to_world(const SceneObject& object) {
@@ -81,8 +91,8 @@ glm::mat4 object_to_world(const SceneObject& object) {
 namespace {
 
 // Built-in shapes' meshes kept for the next world_mesh of the same shape
-// (keep_built_mesh): a built-in shape's mesh is a function of its
-// parameters alone.
+// (keep_built_mesh, which keeps no other kind): a built-in shape's mesh is
+// a function of its parameters alone.
 class KeptMeshes {
   public:
     void keep(const Shape& shape, Mesh mesh) {
@@ -93,7 +103,7 @@ class KeptMeshes {
     std::optional<Mesh> take(const Shape& shape) {
         const std::lock_guard lock(mutex_);
         for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (!same_parameters(entry->first, shape)) continue;
+            if (!same_shape(entry->first, shape)) continue;
             Mesh mesh = std::move(entry->second);
             entries_.erase(entry);
             return mesh;
@@ -106,38 +116,6 @@ class KeptMeshes {
     // a few cover a scene of several shapes, and a mesh nobody takes (a
     // `litkit check`, a scene loaded and not drawn) does not stay for long.
     static constexpr std::size_t capacity = 4;
-
-    // The same built-in shape with the same parameters (every field of it:
-    // the static_asserts notice a field added to one).
-    static bool same_parameters(const Shape& a, const Shape& b) {
-        struct Same {
-            const Shape& other;
-            bool operator()(const CubeShape& c) const {
-                static_assert(sizeof(CubeShape) == sizeof(float));
-                const auto* o = std::get_if<CubeShape>(&other);
-                return o && o->size == c.size;
-            }
-            bool operator()(const SphereShape& s) const {
-                static_assert(sizeof(SphereShape) == sizeof(float) + 2 * sizeof(int));
-                const auto* o = std::get_if<SphereShape>(&other);
-                return o && o->radius == s.radius && o->segments == s.segments && o->rings == s.rings;
-            }
-            bool operator()(const TorusShape& t) const {
-                static_assert(sizeof(TorusShape) == 2 * sizeof(float) + 2 * sizeof(int));
-                const auto* o = std::get_if<TorusShape>(&other);
-                return o && o->major_radius == t.major_radius && o->minor_radius == t.minor_radius &&
-                       o->segments == t.segments && o->sides == t.sides;
-            }
-            bool operator()(const TeapotShape& t) const {
-                static_assert(sizeof(TeapotShape) == sizeof(float) + sizeof(int));
-                const auto* o = std::get_if<TeapotShape>(&other);
-                return o && o->size == t.size && o->subdivisions == t.subdivisions;
-            }
-            bool operator()(const MeshFileShape&) const { return false; }  // never kept
-            bool operator()(const MeshDataShape&) const { return false; }
-        };
-        return std::visit(Same{b}, a);
-    }
 
     std::mutex mutex_;
     std::deque<std::pair<Shape, Mesh>> entries_;  // the latest first
