@@ -1,5 +1,5 @@
 // The SIMD kernel sets' interpolation of Phong varyings against the scalar
-// formulas of the fragment stage (render.cpp), bit for bit: the kernels are
+// formulas of the fragment stage (src/cpu/fragment.cpp), bit for bit: the kernels are
 // built with FMA, and a fused multiply-add would round differently. Every
 // set this CPU runs is checked; the test says which ran and which it skipped.
 #include <gtest/gtest.h>
@@ -39,7 +39,7 @@ std::vector<const Kernels*> runnable_sets() {
     return sets;
 }
 
-// The fragment stage's formulas (render.cpp: shade_row, interpolate_normal),
+// The fragment stage's formulas (fragment.cpp: shade_row, interpolate_normal),
 // each product rounded on its own. `volatile` keeps this file's compiler
 // from fusing them as well.
 float mix(float q0, float q1, float q2, float a, float b, float c) {
@@ -100,7 +100,7 @@ TEST(Kernels, WeightsAndInterpolationRoundAsTheScalarFormulasOnEveryLength) {
     }
 }
 
-// The visibility kernels (render.cpp's wide-triangle rows and small
+// The visibility kernels (rasterize.cpp's wide-triangle rows and small
 // triangles) against the rule written out here pixel by pixel: random edge
 // functions and depths (some NaN, some equal to the new 1/w), every row
 // length and box width, so that every lane, the last partial vector and the
@@ -152,7 +152,7 @@ class GuardedCopy {
 };
 #endif
 
-// One pixel's test and writes, as render.cpp states them.
+// One pixel's test and writes, as rasterize.cpp states them.
 void expect_pixel(float p0, float p1, float p2, const void* triangle, VisibilityBuffers& b, std::size_t i) {
     volatile float sum = p0 + p1;
     const float inverse_w = sum + p2;
@@ -174,7 +174,7 @@ void expect_pixel(float p0, float p1, float p2, const void* triangle, Visibility
 TEST(Kernels, ShadePhongLightsThePointOnEachPixelsRay) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> depth(2.0f, 4.0f), tilt(-0.3f, 0.3f);
-    const litkit::kernels::RowRays rays{{0.0f, 0.5f, 5.0f}, {0.0f, -0.1f, -1.0f}, {0.004f, 0.001f, 0.0f}};
+    const litkit::RowRays rays{{0.0f, 0.5f, 5.0f}, {0.0f, -0.1f, -1.0f}, {0.004f, 0.001f, 0.0f}};
     const std::vector<litkit::equations::PreparedLight> lights{
         litkit::equations::prepare_light(litkit::Light{litkit::PointLight{{0.3f, 1.0f, 2.5f}}, {1, 1, 1}, 3.0f})};
     litkit::Material material;
@@ -284,7 +284,7 @@ TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
     }
 }
 
-// Random small triangles (at most 8 pixels across and down, as render.cpp
+// Random small triangles (at most 8 pixels across and down, as setup.cpp
 // calls them small), their corners often on pixel centres and edges through
 // them (the top-left rule's ties), partly left of the image or starting
 // above the band: the kernels' coverage and writes against the rule written
@@ -298,7 +298,7 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
     int sets_with_kernel = 0;
     for (const Kernels* set : runnable_sets()) {
         if (!set->visibility_small) {
-            std::printf("the %s set has no visibility_small (render.cpp tests pixels one by one)\n", set->name);
+            std::printf("the %s set has no visibility_small (rasterize.cpp tests pixels one by one)\n", set->name);
             continue;
         }
         ++sets_with_kernel;
@@ -428,7 +428,7 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
     if (sets_with_kernel == 0) std::printf("no set on this CPU has visibility_small\n");
 }
 
-// The vertex stage (render.cpp's vertex_stage: glm's matrix product, then
+// The vertex stage (vertex.cpp's vertex_stage: glm's matrix product, then
 // to_window) against its rule written out here vertex by vertex, every
 // product rounded on its own: random matrices and points, points behind the
 // eye and outside each clip plane, w = 0, NaN and coordinates far beyond the

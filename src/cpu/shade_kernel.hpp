@@ -11,6 +11,7 @@
 
 #include "litkit/equations.hpp"
 #include "litkit/lighting.hpp"
+#include "scene/camera.hpp"  // RowRays
 
 namespace litkit::kernels {
 
@@ -31,7 +32,7 @@ constexpr double largest_fixed_coordinate = 0x1p30;
 // A corner in window coordinates: fixed-point x, y and 1/w, and the clip
 // planes it lies outside of (bit k: plane_distances(c)[k] < 0). Unclipped
 // triangles take their corners from the vertex stage, which makes one per
-// mesh vertex; clipped pieces make theirs in setup (render.cpp's
+// mesh vertex; clipped pieces make theirs in the clip stage (clip.cpp's
 // to_window, which the kernels' transform_vertices follows exactly).
 struct WindowCorner {
     std::int32_t x = 0, y = 0;
@@ -40,19 +41,9 @@ struct WindowCorner {
     bool valid = false;        // false: beyond the fixed-point range (degenerate input)
 };
 
-// The rays of one row of pixels (docs/spec.md §1), for the world position
-// seen at each pixel (§3): pixel i's ray leaves the eye along
-// d = centre + k · across, with the whole number k = 2i + 1 − W (its NDC x is
-// k / W), and the point on it at view depth w (clip w) is p = eye + w · d.
-struct RowRays {
-    float eye[3];
-    float centre[3];  // forward + y · tan(fov/2) · up (the row's NDC y): d at k = 0
-    float across[3];  // tan(fov/2) · aspect / W · right: d's change per unit of k
-};
-
 // A run of consecutive pixels of one row in structure-of-arrays form: the
-// view depth w of each (its world position is on its ray, RowRays) and its
-// interpolated (not yet renormalised) normal.
+// view depth w of each (its world position is on its ray: RowRays,
+// scene/camera.hpp) and its interpolated (not yet renormalised) normal.
 struct SurfaceRun {
     const RowRays* rays;
     float first_k;  // k of the run's first pixel (RowRays): the next ones' are + 2, + 4, …
@@ -76,7 +67,7 @@ struct ColorRun {
     float* b;
 };
 
-// A triangle as the visibility pass sees it (render.cpp's setup makes one
+// A triangle as the visibility pass sees it (setup.cpp makes one
 // per front-facing triangle or clipped piece): fixed-point window
 // coordinates and the perspective weight of each corner, ordered so that
 // its doubled area is positive, and its pixel bounds (inclusive, inside the
@@ -87,7 +78,7 @@ struct RasterTriangle {
     std::int16_t min_x, max_x, min_y;
     std::uint16_t max_y_small;  // max_y (≤ 16384) and, in the top bit, small()
     int max_y() const { return max_y_small & 0x7fff; }
-    // At most small_triangle (render.cpp: 8 pixels, in fixed point) wide and
+    // At most small_triangle (pipeline.hpp: 8 pixels, in fixed point) wide and
     // high: its edge functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its
     // box, and a few pixels' steps beyond) and convert to float exactly.
     bool small() const { return (max_y_small >> 15) != 0; }
@@ -98,13 +89,13 @@ struct Kernels {
     // docs/spec.md §3 Phong shading's normal along a span of pixels of one
     // triangle: N = q0·n0 + q1·n1 + q2·n2 from the corners' normals and the
     // pixels' perspective-correct weights (perspective_weights). The same
-    // roundings as the scalar formulas in render.cpp: no fused multiply-add.
+    // roundings as the scalar formulas in fragment.cpp: no fused multiply-add.
     void (*interpolate)(const float* q0, const float* q1, const float* q2, std::size_t count,
                         const float (*normal)[3], const NormalOut& out);
     // The vertex stage of `count` mesh vertices (positions x, y, z one after
     // another): clip = M · (p, 1) as glm multiplies, (M0·x + M1·y) +
     // (M2·z + M3) with M's columns (written x, y, z, w per vertex), and the
-    // window corner render.cpp's to_window makes of it: the clip planes
+    // window corner clip.cpp's to_window makes of it: the clip planes
     // outside, 1/w, and x, y in fixed point, (x/w + 1)·half_width and
     // (1 − y/w)·half_height times subpixel_one rounded half up, valid where
     // both are below largest_fixed_coordinate in magnitude (otherwise x, y
@@ -128,9 +119,9 @@ struct Kernels {
     // written as interleaved RGB bytes.
     void (*encode)(const float* r, const float* g, const float* b, std::size_t count, float gamma,
                    std::uint8_t* rgb);
-    // The visibility test along one row of a wide triangle (render.cpp),
+    // The visibility test along one row of a wide triangle (rasterize.cpp),
     // pixel i of [0, count): the unbiased edge functions v[k] + i·step[k]
-    // (integers; render.cpp calls this only where they stay below 2^52 in
+    // (integers; rasterize.cpp calls this only where they stay below 2^52 in
     // magnitude along the row, so that a double holds each exactly),
     // p_k = float(edge k) · weight[k] and 1/w = (p0 + p1) + p2. Where 1/w
     // is not ≤ depth[i] (nearer, or NaN), it writes depth[i] = 1/w,
@@ -152,7 +143,7 @@ struct Kernels {
     // `visible`); touched_begin/touched_end of the row widen to its covered
     // pixels. The buffers and the touched arrays start at row first_row
     // (and column 0); `stride` is the buffers' row length. Null in the
-    // portable set, whose pixels render.cpp tests one at a time.
+    // portable set, whose small triangles rasterize.cpp tests itself.
     void (*visibility_small)(const RasterTriangle& triangle, int first_row, int rows, const void* shade,
                              float* depth, const void** visible, float* weight1, float* weight2,
                              std::size_t stride, int* touched_begin, int* touched_end);

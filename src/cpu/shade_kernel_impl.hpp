@@ -75,12 +75,13 @@ struct Impl {
         // the copy the linker keeps for every caller.)
         auto shade_batch = [&](std::size_t i, const float* w, const float* nx, const float* ny,
                                const float* nz, float* r, float* g, float* b) {
-            // The point at depth w on each pixel's ray; rounded(): no
-            // product fuses with the sum after it.
+            // The point at depth w on each pixel's ray (scene/camera.hpp's
+            // formulas); rounded(): no product fuses with the sum after it.
             const Batch k = Batch(s.first_k + 2.0f * static_cast<float>(i)) + lane_step;
             const Batch depth = Batch::load_unaligned(w);
+            auto round = [](const Batch& value) { return rounded(value); };
             auto along = [&](const Batch& e, const Batch& c, const Batch& a) {
-                return e + rounded(depth * (rounded(k * a) + c));
+                return point_coordinate(e, direction_coordinate(c, a, k, round), depth, round);
             };
             const Vec3<Batch> p{along(eye.x, centre.x, across.x), along(eye.y, centre.y, across.y),
                                 along(eye.z, centre.z, across.z)};
