@@ -172,6 +172,8 @@ struct SceneObject {
     std::optional<float> crease_angle_degrees;
 };
 
+class BuiltMeshes;
+
 /// A whole scene, as loaded (load_scene, parse_scene) or built in code. A
 /// renderer draws it only after validate_scene finds no error.
 struct Scene {
@@ -206,6 +208,15 @@ struct Scene {
     /// Problems that do not stop rendering but are surely unintended (no
     /// lights, an object outside the view), found while loading.
     std::vector<Diagnostic> warnings;
+
+    /// The meshes of built-in shapes that validating this scene built, kept
+    /// for its renderers to take instead of building them again (each is
+    /// taken once; the last four built are kept). load_scene and
+    /// parse_scene set it, and validate_scene and every renderer use it
+    /// when it is set; copies of the scene share it. Null for a scene built
+    /// in code: then every renderer builds its meshes itself. Set it to null
+    /// to free what was not taken.
+    std::shared_ptr<BuiltMeshes> built_meshes;
 };
 
 /// The default reflection model of R10: Phong.

@@ -235,7 +235,8 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object));
+            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object),
+                                                            scene.built_meshes.get());
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
         }

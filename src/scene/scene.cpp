@@ -7,8 +7,6 @@
 #include <glm/mat3x3.hpp>
 
 #include <cstdint>
-#include <deque>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -88,46 +86,6 @@ glm::mat4 object_to_world(const SceneObject& object) {
     return glm::scale(transform, glm::vec3(object.scale));
 }
 
-namespace {
-
-// Built-in shapes' meshes kept for the next world_mesh of the same shape
-// (keep_built_mesh, which keeps no other kind): a built-in shape's mesh is
-// a function of its parameters alone.
-class KeptMeshes {
-  public:
-    void keep(const Shape& shape, Mesh mesh) {
-        const std::lock_guard lock(mutex_);
-        entries_.emplace_front(shape, std::move(mesh));
-        if (entries_.size() > capacity) entries_.pop_back();
-    }
-    std::optional<Mesh> take(const Shape& shape) {
-        const std::lock_guard lock(mutex_);
-        for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (!same_shape(entry->first, shape)) continue;
-            Mesh mesh = std::move(entry->second);
-            entries_.erase(entry);
-            return mesh;
-        }
-        return std::nullopt;
-    }
-
-  private:
-    // A scene's objects are validated and then drawn one scene at a time;
-    // a few cover a scene of several shapes, and a mesh nobody takes (a
-    // `litkit check`, a scene loaded and not drawn) does not stay for long.
-    static constexpr std::size_t capacity = 4;
-
-    std::mutex mutex_;
-    std::deque<std::pair<Shape, Mesh>> entries_;  // the latest first
-};
-
-KeptMeshes& kept_meshes() {
-    static KeptMeshes kept;
-    return kept;
-}
-
-}  // namespace
-
 Mesh object_mesh(const SceneObject& object) {
     struct Build {
         Mesh operator()(const CubeShape& cube) const { return make_cube(cube.size); }
@@ -154,9 +112,29 @@ Mesh object_mesh(const SceneObject& object) {
     return std::visit(Build{}, object.shape);
 }
 
-void keep_built_mesh(const Shape& shape, Mesh mesh) {
+void BuiltMeshes::keep(const Shape& shape, Mesh mesh) {
     if (std::holds_alternative<MeshFileShape>(shape) || std::holds_alternative<MeshDataShape>(shape)) return;
-    kept_meshes().keep(shape, std::move(mesh));
+    const std::lock_guard lock(mutex_);
+    entries_.emplace_front(shape, std::move(mesh));
+    if (entries_.size() > capacity) entries_.pop_back();
+}
+
+std::optional<Mesh> BuiltMeshes::take(const Shape& shape) {
+    const std::lock_guard lock(mutex_);
+    for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
+        if (!same_shape(entry->first, shape)) continue;
+        Mesh mesh = std::move(entry->second);
+        entries_.erase(entry);
+        return mesh;
+    }
+    return std::nullopt;
+}
+
+Mesh object_mesh(const SceneObject& object, BuiltMeshes* built) {
+    if (built) {
+        if (std::optional<Mesh> kept = built->take(object.shape)) return std::move(*kept);
+    }
+    return object_mesh(object);
 }
 
 namespace {
@@ -290,10 +268,8 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
 }
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
-                     const ParallelFor& parallel) {
-    // The mesh load_scene's validation built for this shape, else a new one.
-    std::optional<Mesh> kept = kept_meshes().take(object.shape);
-    Mesh mesh = kept ? std::move(*kept) : object_mesh(object);
+                     const ParallelFor& parallel, BuiltMeshes* built) {
+    Mesh mesh = object_mesh(object, built);
     std::vector<glm::vec3> local_normals;
     const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
     if (options.normals == Normals::File) {
