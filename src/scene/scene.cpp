@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/creased_normals.hpp"
+#include "geometry/mesh_formats.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/validate_internal.hpp"
 #include "scene/world_mesh.hpp"
@@ -98,7 +99,9 @@ Mesh object_mesh(const SceneObject& object) {
         Mesh operator()(const TeapotShape& teapot) const {
             return make_teapot(teapot.size, teapot.subdivisions);
         }
-        Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
+        Mesh operator()(const MeshFileShape& mesh) const {
+            return detail::mesh_format(mesh.file).read(mesh.file);
+        }
         Mesh operator()(const MeshDataShape& data) const {
             if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
             if (std::string problem = check_mesh_data(*data.mesh); !problem.empty())
@@ -231,7 +234,8 @@ std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& 
 Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh,
                                      std::size_t triangle) {
     const std::uint32_t face = mesh.triangle_faces[triangle];
-    return Diagnostic{FileLoc{file.file.string(), line_of_face(file.file, face), 0},
+    const std::uint32_t line = detail::mesh_format(file.file).line_of_face(file.file, face);
+    return Diagnostic{FileLoc{file.file.string(), line, 0},
                       Severity::Error,
                       "face " + std::to_string(face + 1) +
                           " has a corner without a normal (v/vt/vn or v//vn), which "
