@@ -310,7 +310,8 @@ NormalOptions normal_options(const Scene& scene, const SceneObject& object);
 /// corner (a crease, or a mesh file's normals), a position appears once per
 /// distinct normal at it, so every backend gets per-corner normals as plain
 /// vertices. Throws SceneError, located at the face's line in the mesh file,
-/// for "file" normals on a mesh that lacks a normal at some face corner.
+/// for "file" normals on a mesh that lacks a normal at some face corner, and
+/// ArgumentError for "file" normals on an object that is not a mesh file.
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options);
 
 }  // namespace litkit

@@ -20,7 +20,6 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -96,8 +95,8 @@ std::size_t face_normals_from(const Mesh& mesh, std::size_t t, std::size_t end, 
 void check_triangle_indices(const Mesh& mesh, const char* function) {
     const std::size_t position_count = mesh.positions.size();
     if (position_count > std::numeric_limits<std::uint32_t>::max()) {
-        throw std::length_error(std::string(function) +
-                                ": more positions than 32-bit indices can reach");
+        throw ArgumentError(std::string(function) +
+                            ": more positions than 32-bit indices can reach");
     }
     for (const auto& triangle : mesh.triangles) {
         for (const std::uint32_t corner : triangle) {
@@ -163,9 +162,9 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
 // The checks every weighting starts with.
 void check_weighting(const Mesh& mesh, Normals weighting, const char* function) {
     if (weighting == Normals::File) {
-        throw std::invalid_argument(std::string(function) +
-                                    ": \"file\" normals come from the mesh file, not from "
-                                    "weighting faces");
+        throw ArgumentError(std::string(function) +
+                            ": \"file\" normals come from the mesh file, not from "
+                            "weighting faces");
     }
     check_triangle_indices(mesh, function);
 }
@@ -305,9 +304,9 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
 
 CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease_angle_degrees) {
     if (!(crease_angle_degrees > 0.0f && crease_angle_degrees <= 180.0f)) {
-        throw std::invalid_argument("corner_normals: crease angle " +
-                                    std::to_string(crease_angle_degrees) +
-                                    " is outside (0, 180] degrees");
+        throw ArgumentError("corner_normals: crease angle " +
+                            std::to_string(crease_angle_degrees) +
+                            " is outside (0, 180] degrees");
     }
     std::vector<std::uint32_t> vertex_of_position =
         welded_vertices(mesh, weighting, "corner_normals");

@@ -251,7 +251,9 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
     } catch (const std::runtime_error& error) {
         // Errors in the input (an unreadable mesh file, docs/spec.md §9.2's
         // missing file normal) are the input's, not OpenGL's.
-        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error)) throw;
+        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error) ||
+            dynamic_cast<const ArgumentError*>(&error))
+            throw;
         throw GlError(error.what());
     }
 }

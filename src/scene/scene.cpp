@@ -1,5 +1,6 @@
 // A Scene's objects placed in the world (docs/spec.md §2): their transforms, meshes and
-// world-space vertices and normals, as every backend draws them.
+// world-space vertices and normals, as every backend draws them; the meshes
+// validation built, kept for the renderers (BuiltMeshes).
 #include "litkit/scene.hpp"
 
 #include <glm/geometric.hpp>
@@ -8,7 +9,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -214,7 +214,7 @@ void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm
 std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& object) {
     const auto* file = std::get_if<MeshFileShape>(&object.shape);
     if (!file || mesh.triangle_file_normals.size() != mesh.triangles.size()) {
-        throw std::invalid_argument("world_mesh: normals = \"file\" needs a mesh object");
+        throw ArgumentError("world_mesh: normals = \"file\" needs a mesh object");
     }
     std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
