@@ -10,8 +10,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "geometry/mesh_formats.hpp"  // internal (src/)
 #include "litkit/error.hpp"
 #include "litkit/mesh.hpp"
+#include "litkit/shapes.hpp"
 
 namespace {
 
@@ -312,6 +314,17 @@ TEST(Bounds, OfEmptyMeshAreZero) {
     const litkit::Bounds box = bounds(Mesh{});
     expect_near(box.min, {0, 0, 0}, 0.0f);
     expect_near(box.max, {0, 0, 0}, 0.0f);
+}
+
+// Mesh files are read by their extension's reader (geometry/mesh_formats.cpp);
+// OBJ is the only format, and reads a file of any other extension too.
+TEST(MeshFormats, TheExtensionChoosesTheReaderWithoutRegardToCase) {
+    for (const char* name : {"a.obj", "b.OBJ", "c.Obj", "d.stl", "e", "f.obj.txt"}) {
+        const litkit::detail::MeshFormat& format = litkit::detail::mesh_format(name);
+        EXPECT_EQ(format.extension, ".obj") << name;
+        EXPECT_EQ(format.read, &litkit::load_obj) << name;
+        EXPECT_EQ(format.line_of_face, &litkit::line_of_face) << name;
+    }
 }
 
 }  // namespace

@@ -28,6 +28,7 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/shapes.hpp"
+#include "litkit/validate.hpp"
 
 namespace {
 
@@ -235,7 +236,7 @@ TEST(NormalWeighting, MeanIsExactlyTheDd9VertexNormals) {
 }
 
 TEST(NormalWeighting, FileIsNotAWeighting) {
-    EXPECT_THROW(vertex_normals(two_triangles(), Normals::File), std::invalid_argument);
+    EXPECT_THROW(vertex_normals(two_triangles(), Normals::File), litkit::ArgumentError);
 }
 
 TEST(NormalWeighting, NamesRoundTrip) {
@@ -296,9 +297,9 @@ TEST(Crease, LeavesASphereSmooth) {
 }
 
 TEST(Crease, AngleOutsideZeroToOneEightyIsRefused) {
-    EXPECT_THROW(corner_normals(two_triangles(), Normals::Mean, 0.0f), std::invalid_argument);
-    EXPECT_THROW(corner_normals(two_triangles(), Normals::Mean, 181.0f), std::invalid_argument);
-    EXPECT_THROW(corner_normals(two_triangles(), Normals::File, 60.0f), std::invalid_argument);
+    EXPECT_THROW(corner_normals(two_triangles(), Normals::Mean, 0.0f), litkit::ArgumentError);
+    EXPECT_THROW(corner_normals(two_triangles(), Normals::Mean, 181.0f), litkit::ArgumentError);
+    EXPECT_THROW(corner_normals(two_triangles(), Normals::File, 60.0f), litkit::ArgumentError);
 }
 
 litkit::SceneObject object_of(litkit::Shape shape) {
@@ -564,7 +565,7 @@ TEST(ParallelMeshBuilding, ThreadsGiveTheSameNormalsBitForBit) {
     Mesh bad = litkit::make_cube(1.0f);
     bad.triangles.push_back({0, 1, 99});
     EXPECT_THROW(vertex_normals(bad, Normals::Mean, threads), litkit::ArgumentError);
-    EXPECT_THROW(vertex_normals(bad, Normals::File, threads), std::invalid_argument);
+    EXPECT_THROW(vertex_normals(bad, Normals::File, threads), litkit::ArgumentError);
 }
 
 TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
@@ -589,8 +590,8 @@ TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
     }
 }
 
-// Issue 16: a built-in shape is built once for load_scene's validation and
-// the renderer of the same scene (scene/world_mesh.hpp's keep_built_mesh).
+// A built-in shape is built once for load_scene's validation and the
+// renderer of the same scene (Scene::built_meshes, scene/world_mesh.hpp).
 namespace {
 
 litkit::SceneObject sphere_object(int segments, int rings) {
@@ -607,27 +608,35 @@ litkit::Mesh marker_mesh() {
     return mesh;
 }
 
+litkit::WorldMesh world_mesh_from(const litkit::SceneObject& object, litkit::BuiltMeshes& built) {
+    return litkit::world_mesh(object, litkit::NormalOptions{}, litkit::ParallelFor{}, &built);
+}
+
 }  // namespace
 
-TEST(KeptMeshes, WorldMeshTakesTheMeshKeptForItsShapeOnce) {
-    litkit::keep_built_mesh(sphere_object(40, 20).shape, marker_mesh());
+TEST(BuiltMeshes, WorldMeshTakesTheMeshKeptForItsShapeOnce) {
+    litkit::BuiltMeshes built;
+    built.keep(sphere_object(40, 20).shape, marker_mesh());
     // Another parameter: not that mesh.
-    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 21)).triangles, litkit::make_sphere(1.5f, 40, 21).triangles);
-    // The same parameters: taken (the marker's one triangle) ...
-    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles.size(), 1u);
-    // ... once: the next is built.
+    EXPECT_EQ(world_mesh_from(sphere_object(40, 21), built).triangles, litkit::make_sphere(1.5f, 40, 21).triangles);
+    // Without the kept meshes: built.
     EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles, litkit::make_sphere(1.5f, 40, 20).triangles);
+    // The same parameters: taken (the marker's one triangle) ...
+    EXPECT_EQ(world_mesh_from(sphere_object(40, 20), built).triangles.size(), 1u);
+    // ... once: the next is built.
+    EXPECT_EQ(world_mesh_from(sphere_object(40, 20), built).triangles, litkit::make_sphere(1.5f, 40, 20).triangles);
 }
 
-TEST(KeptMeshes, OnlyTheLastFourAreKept) {
-    litkit::keep_built_mesh(sphere_object(30, 10).shape, marker_mesh());
+TEST(BuiltMeshes, OnlyTheLastFourAreKept) {
+    litkit::BuiltMeshes built;
+    built.keep(sphere_object(30, 10).shape, marker_mesh());
     for (int rings = 11; rings <= 14; ++rings)
-        litkit::keep_built_mesh(sphere_object(30, rings).shape, litkit::make_sphere(1.5f, 30, rings));
-    EXPECT_EQ(litkit::world_mesh(sphere_object(30, 10)).triangles, litkit::make_sphere(1.5f, 30, 10).triangles);
-    EXPECT_EQ(litkit::world_mesh(sphere_object(30, 14)).triangles, litkit::make_sphere(1.5f, 30, 14).triangles);
+        built.keep(sphere_object(30, rings).shape, litkit::make_sphere(1.5f, 30, rings));
+    EXPECT_EQ(world_mesh_from(sphere_object(30, 10), built).triangles, litkit::make_sphere(1.5f, 30, 10).triangles);
+    EXPECT_EQ(world_mesh_from(sphere_object(30, 14), built).triangles, litkit::make_sphere(1.5f, 30, 14).triangles);
 }
 
-TEST(KeptMeshes, MeshFilesAreNotKept) {
+TEST(BuiltMeshes, MeshFilesAreNotKept) {
     const fs::path file = fs::temp_directory_path() / "litkit-kept-mesh-test.obj";
     {
         std::ofstream out(file);
@@ -635,12 +644,13 @@ TEST(KeptMeshes, MeshFilesAreNotKept) {
     }
     litkit::SceneObject object;
     object.shape = litkit::MeshFileShape{.file = file};
-    litkit::keep_built_mesh(object.shape, marker_mesh());
-    EXPECT_EQ(litkit::world_mesh(object).triangles.size(), 2u);  // read from the file
+    litkit::BuiltMeshes built;
+    built.keep(object.shape, marker_mesh());
+    EXPECT_EQ(world_mesh_from(object, built).triangles.size(), 2u);  // read from the file
     fs::remove(file);
 }
 
-TEST(KeptMeshes, LoadingASceneKeepsItsShapesForTheRenderer) {
+TEST(BuiltMeshes, LoadingASceneKeepsItsShapesForTheRenderer) {
     // load_scene validates (building the sphere); the renderer takes that
     // mesh: the picture is the one of a scene built without keeping.
     const fs::path file = fs::path(LITKIT_SOURCE_DIR) / "examples" / "sphere.toml";
@@ -650,4 +660,31 @@ TEST(KeptMeshes, LoadingASceneKeepsItsShapesForTheRenderer) {
     const litkit::Image kept = litkit::render(loaded);
     const litkit::Image built = litkit::render(loaded);  // nothing kept any more
     EXPECT_EQ(kept.rgb, built.rgb);
+}
+
+TEST(BuiltMeshes, EachShapeIsBuiltOnceFromLoadingToRendering) {
+    // The mesh that loading built is kept in the scene; put a marker in its
+    // place to see who uses it.
+    const fs::path file = fs::path(LITKIT_SOURCE_DIR) / "examples" / "sphere.toml";
+    litkit::Scene loaded = litkit::load_scene(std::span(&file, 1));
+    ASSERT_TRUE(loaded.built_meshes);
+    ASSERT_EQ(loaded.objects.size(), 1u);
+    const litkit::Shape& shape = loaded.objects[0].shape;
+    const std::optional<litkit::Mesh> from_loading = loaded.built_meshes->take(shape);
+    ASSERT_TRUE(from_loading);
+    const auto& sphere = std::get<litkit::SphereShape>(shape);
+    EXPECT_EQ(from_loading->triangles,
+              litkit::make_sphere(sphere.radius, sphere.segments, sphere.rings).triangles);
+    loaded.built_meshes->keep(shape, marker_mesh());
+    // Validating again takes the kept mesh and keeps it back, building none.
+    (void)litkit::validate_scene(loaded);
+    // A copy of the scene shares the kept meshes: its renderer takes the marker ...
+    const litkit::Scene copy = loaded;
+    EXPECT_EQ(litkit::Renderer(copy).triangle_count(), 1u);
+    // ... once: the next renderer builds the sphere.
+    EXPECT_EQ(litkit::Renderer(loaded).triangle_count(), from_loading->triangles.size());
+    // A scene built in code keeps nothing: its renderers build their meshes.
+    litkit::Scene in_code;
+    EXPECT_FALSE(in_code.built_meshes);
+    EXPECT_FALSE(litkit::validate_scene(in_code).empty());  // warns: no lights, no objects
 }

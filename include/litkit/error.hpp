@@ -2,6 +2,13 @@
 /// Errors the library throws. The library never prints or exits: it throws one
 /// of these, and the caller (the CLI, a test, a user's program) decides how to
 /// show it. Every error about a scene carries the place it comes from.
+///
+/// Whatever the input or the caller can cause (a bad scene, an unreadable
+/// file, an argument outside a function's contract, an OpenGL that fails:
+/// GlError in litkit/gl_renderer.hpp) is thrown as a subclass of Error.
+/// Two others can escape: std::bad_alloc when memory runs out, and
+/// std::logic_error (or a subclass) for a broken internal invariant, which
+/// is a bug in litkit, never a problem of the input.
 #pragma once
 
 #include <cstdint>
@@ -44,10 +51,10 @@ struct Diagnostic {
     std::string to_string() const;
 };
 
-//// The one base of every error litkit throws, so that one `catch` reports them
-/// all: what() is the one-line (for SceneError, one line per problem)
-/// diagnostic that `litkit check` prints, and location() says where, when
-/// there is a place ("scene.toml:14:12"; empty otherwise).
+/// The base of the errors above, so that one `catch` reports them all:
+/// what() is the one-line (for SceneError, one line per problem) diagnostic
+/// that `litkit check` prints, and location() says where, when there is a
+/// place ("scene.toml:14:12"; empty otherwise).
 class Error : public std::runtime_error {
 public:
     /// `what` is the whole diagnostic, location included when there is one.

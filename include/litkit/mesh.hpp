@@ -60,7 +60,8 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 /// positions is one vertex). Zero-area triangles take no part, nor do
 /// triangles two of whose corners count as one. A position touched by no
 /// usable triangle gets the zero vector. O(n log n); throws ArgumentError
-/// for a triangle index beyond the positions.
+/// for a triangle index beyond the positions (or more positions than 32-bit
+/// indices reach).
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
 
 /// docs/spec.md §9.2: vertex normals with each usable triangle f at vertex v
@@ -69,7 +70,8 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
 /// Area e1 × e2, Angle θ_f·n̂_f with θ_f = atan2(‖e1 × e2‖, e1·e2), Max
 /// (e1 × e2)/(‖e1‖²·‖e2‖²). Welding and zero-area rules as vertex_normals;
 /// a triangle with a zero-length edge takes no part. File is not a
-/// weighting: it throws std::invalid_argument.
+/// weighting: it throws ArgumentError (as for a triangle index beyond the
+/// positions).
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting);
 
 /// docs/spec.md §9.2 crease: the normal of each triangle corner (entry
@@ -77,8 +79,8 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting);
 /// triangles g at the corner's vertex whose unit normals satisfy
 /// n̂_f·n̂_g > cos(crease_angle_degrees), f itself always. A corner whose
 /// every neighbour counts gets exactly its vertex normal. Unusable triangles
-/// get the zero vector. Throws std::invalid_argument for File or an angle
-/// outside (0, 180].
+/// get the zero vector. Throws ArgumentError for File, an angle outside
+/// (0, 180] or a triangle index beyond the positions.
 std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
                                       float crease_angle_degrees);
 

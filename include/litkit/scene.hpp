@@ -172,6 +172,8 @@ struct SceneObject {
     std::optional<float> crease_angle_degrees;
 };
 
+class BuiltMeshes;
+
 /// A whole scene, as loaded (load_scene, parse_scene) or built in code. A
 /// renderer draws it only after validate_scene finds no error.
 struct Scene {
@@ -206,6 +208,15 @@ struct Scene {
     /// Problems that do not stop rendering but are surely unintended (no
     /// lights, an object outside the view), found while loading.
     std::vector<Diagnostic> warnings;
+
+    /// The meshes of built-in shapes that validating this scene built, kept
+    /// for its renderers to take instead of building them again (each is
+    /// taken once; the last four built are kept). load_scene and
+    /// parse_scene set it, and validate_scene and every renderer use it
+    /// when it is set; copies of the scene share it. Null for a scene built
+    /// in code: then every renderer builds its meshes itself. Set it to null
+    /// to free what was not taken.
+    std::shared_ptr<BuiltMeshes> built_meshes;
 };
 
 /// The default reflection model of R10: Phong.
@@ -299,7 +310,8 @@ NormalOptions normal_options(const Scene& scene, const SceneObject& object);
 /// corner (a crease, or a mesh file's normals), a position appears once per
 /// distinct normal at it, so every backend gets per-corner normals as plain
 /// vertices. Throws SceneError, located at the face's line in the mesh file,
-/// for "file" normals on a mesh that lacks a normal at some face corner.
+/// for "file" normals on a mesh that lacks a normal at some face corner, and
+/// ArgumentError for "file" normals on an object that is not a mesh file.
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options);
 
 }  // namespace litkit

@@ -19,8 +19,10 @@ namespace litkit {
 /// Shape parameters are checked before any mesh is built, so a huge
 /// `segments` is refused before it allocates. Mesh files are read to test
 /// their geometry: one that cannot be read throws IoError located at its
-/// `file` key. Returns the problems rather than throwing them: the scene is
-/// valid when none has Severity::Error.
+/// `file` key. The built-in shapes' meshes it builds go to
+/// scene.built_meshes where that is set, for the renderers (and are taken
+/// from there first). Returns the problems rather than throwing them: the
+/// scene is valid when none has Severity::Error.
 std::vector<Diagnostic> validate_scene(const Scene& scene);
 
 /// The same, with a triangle budget other than default_triangle_budget: the

@@ -1,12 +1,13 @@
 #include "codegen/gl_scene.hpp"
 
 #include "litkit/mesh.hpp"
+#include "scene/world_mesh.hpp"
 
 namespace litkit::detail {
 
 GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
-                   const NormalOptions& normals) {
-    WorldMesh mesh = world_mesh(object, normals);
+                   const NormalOptions& normals, BuiltMeshes* built) {
+    WorldMesh mesh = world_mesh(object, normals, ParallelFor{}, built);
     GlObject gl;
     gl.triangles = mesh.triangles.size();
     gl.material = object.material;

@@ -26,8 +26,10 @@ struct GlObject {
 
 // Throws IoError for an unreadable mesh file.
 // `normals`: how its vertex normals are found (normal_options, docs/spec.md §9.2).
+// `built`: the scene's built meshes (Scene::built_meshes) to take the local
+// mesh from, else null.
 GlObject gl_object(const SceneObject& object, Reflection reflection, Shading shading,
-                   const NormalOptions& normals);
+                   const NormalOptions& normals, BuiltMeshes* built = nullptr);
 
 std::vector<equations::PreparedLight> prepared_lights(const Scene& scene);
 

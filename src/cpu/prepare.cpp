@@ -51,7 +51,8 @@ void Pipeline::prepare() {
         pool.parallel_for(count, [&](std::size_t index, int) { job(index); });
     };
     for (const SceneObject& object : scene.objects) {
-        WorldMesh mesh = world_mesh(object, normal_options(scene, object), parallel);
+        WorldMesh mesh =
+            world_mesh(object, normal_options(scene, object), parallel, scene.built_meshes.get());
         PreparedObject prepared;
         prepared.positions = std::move(mesh.positions);
         prepared.normals = std::move(mesh.normals);

@@ -1,5 +1,6 @@
 // Meshes given in memory (scene.hpp's MeshDataShape): their checks, OBJ
-// text, and the orientation tests behind the inside-out warning.
+// text, the orientation tests behind the inside-out warning, and bounds.
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -95,6 +96,16 @@ bool is_closed(const Mesh& mesh) {
         if (!std::binary_search(edges.begin(), edges.end(), reverse)) return false;
     }
     return true;
+}
+
+Bounds bounds(const Mesh& mesh) {
+    if (mesh.positions.empty()) return {};
+    Bounds box{mesh.positions.front(), mesh.positions.front()};
+    for (const glm::vec3& position : mesh.positions) {
+        box.min = glm::min(box.min, position);
+        box.max = glm::max(box.max, position);
+    }
+    return box;
 }
 
 }  // namespace litkit

@@ -235,7 +235,8 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object));
+            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object),
+                                                            scene.built_meshes.get());
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
         }
@@ -250,7 +251,9 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
     } catch (const std::runtime_error& error) {
         // Errors in the input (an unreadable mesh file, docs/spec.md §9.2's
         // missing file normal) are the input's, not OpenGL's.
-        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error)) throw;
+        if (dynamic_cast<const IoError*>(&error) || dynamic_cast<const SceneError*>(&error) ||
+            dynamic_cast<const ArgumentError*>(&error))
+            throw;
         throw GlError(error.what());
     }
 }

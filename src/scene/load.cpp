@@ -16,6 +16,7 @@
 #include "litkit/validate.hpp"
 #include "scene/nesting.hpp"
 #include "scene/reader.hpp"
+#include "scene/world_mesh.hpp"
 
 namespace litkit {
 
@@ -67,6 +68,8 @@ void normalise_tiny_and_huge_directions(Scene& scene) {
 Scene build_scene(std::span<const ParsedFile> files,
                   std::uint64_t triangle_budget = default_triangle_budget) {
     Scene scene;
+    // Validation keeps the meshes it builds here, for the renderer.
+    scene.built_meshes = std::make_shared<BuiltMeshes>();
     SceneReader reader(scene);
     for (const ParsedFile& file : files) reader.read_file(file);
     reader.check_required_tables(files);

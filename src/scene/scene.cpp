@@ -1,5 +1,6 @@
 // A Scene's objects placed in the world (docs/spec.md §2): their transforms, meshes and
-// world-space vertices and normals, as every backend draws them.
+// world-space vertices and normals, as every backend draws them; the meshes
+// validation built, kept for the renderers (BuiltMeshes).
 #include "litkit/scene.hpp"
 
 #include <glm/geometric.hpp>
@@ -7,16 +8,14 @@
 #include <glm/mat3x3.hpp>
 
 #include <cstdint>
-#include <deque>
-#include <mutex>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "geometry/creased_normals.hpp"
+#include "geometry/mesh_formats.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/validate_internal.hpp"
 #include "scene/world_mesh.hpp"
@@ -88,46 +87,6 @@ glm::mat4 object_to_world(const SceneObject& object) {
     return glm::scale(transform, glm::vec3(object.scale));
 }
 
-namespace {
-
-// Built-in shapes' meshes kept for the next world_mesh of the same shape
-// (keep_built_mesh, which keeps no other kind): a built-in shape's mesh is
-// a function of its parameters alone.
-class KeptMeshes {
-  public:
-    void keep(const Shape& shape, Mesh mesh) {
-        const std::lock_guard lock(mutex_);
-        entries_.emplace_front(shape, std::move(mesh));
-        if (entries_.size() > capacity) entries_.pop_back();
-    }
-    std::optional<Mesh> take(const Shape& shape) {
-        const std::lock_guard lock(mutex_);
-        for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (!same_shape(entry->first, shape)) continue;
-            Mesh mesh = std::move(entry->second);
-            entries_.erase(entry);
-            return mesh;
-        }
-        return std::nullopt;
-    }
-
-  private:
-    // A scene's objects are validated and then drawn one scene at a time;
-    // a few cover a scene of several shapes, and a mesh nobody takes (a
-    // `litkit check`, a scene loaded and not drawn) does not stay for long.
-    static constexpr std::size_t capacity = 4;
-
-    std::mutex mutex_;
-    std::deque<std::pair<Shape, Mesh>> entries_;  // the latest first
-};
-
-KeptMeshes& kept_meshes() {
-    static KeptMeshes kept;
-    return kept;
-}
-
-}  // namespace
-
 Mesh object_mesh(const SceneObject& object) {
     struct Build {
         Mesh operator()(const CubeShape& cube) const { return make_cube(cube.size); }
@@ -140,7 +99,9 @@ Mesh object_mesh(const SceneObject& object) {
         Mesh operator()(const TeapotShape& teapot) const {
             return make_teapot(teapot.size, teapot.subdivisions);
         }
-        Mesh operator()(const MeshFileShape& mesh) const { return load_obj(mesh.file); }
+        Mesh operator()(const MeshFileShape& mesh) const {
+            return detail::mesh_format(mesh.file).read(mesh.file);
+        }
         Mesh operator()(const MeshDataShape& data) const {
             if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
             if (std::string problem = check_mesh_data(*data.mesh); !problem.empty())
@@ -154,9 +115,29 @@ Mesh object_mesh(const SceneObject& object) {
     return std::visit(Build{}, object.shape);
 }
 
-void keep_built_mesh(const Shape& shape, Mesh mesh) {
+void BuiltMeshes::keep(const Shape& shape, Mesh mesh) {
     if (std::holds_alternative<MeshFileShape>(shape) || std::holds_alternative<MeshDataShape>(shape)) return;
-    kept_meshes().keep(shape, std::move(mesh));
+    const std::lock_guard lock(mutex_);
+    entries_.emplace_front(shape, std::move(mesh));
+    if (entries_.size() > capacity) entries_.pop_back();
+}
+
+std::optional<Mesh> BuiltMeshes::take(const Shape& shape) {
+    const std::lock_guard lock(mutex_);
+    for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
+        if (!same_shape(entry->first, shape)) continue;
+        Mesh mesh = std::move(entry->second);
+        entries_.erase(entry);
+        return mesh;
+    }
+    return std::nullopt;
+}
+
+Mesh object_mesh(const SceneObject& object, BuiltMeshes* built) {
+    if (built) {
+        if (std::optional<Mesh> kept = built->take(object.shape)) return std::move(*kept);
+    }
+    return object_mesh(object);
 }
 
 namespace {
@@ -233,7 +214,7 @@ void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm
 std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& object) {
     const auto* file = std::get_if<MeshFileShape>(&object.shape);
     if (!file || mesh.triangle_file_normals.size() != mesh.triangles.size()) {
-        throw std::invalid_argument("world_mesh: normals = \"file\" needs a mesh object");
+        throw ArgumentError("world_mesh: normals = \"file\" needs a mesh object");
     }
     std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -253,7 +234,8 @@ std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& 
 Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh,
                                      std::size_t triangle) {
     const std::uint32_t face = mesh.triangle_faces[triangle];
-    return Diagnostic{FileLoc{file.file.string(), line_of_face(file.file, face), 0},
+    const std::uint32_t line = detail::mesh_format(file.file).line_of_face(file.file, face);
+    return Diagnostic{FileLoc{file.file.string(), line, 0},
                       Severity::Error,
                       "face " + std::to_string(face + 1) +
                           " has a corner without a normal (v/vt/vn or v//vn), which "
@@ -290,10 +272,8 @@ WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options) {
 }
 
 WorldMesh world_mesh(const SceneObject& object, const NormalOptions& options,
-                     const ParallelFor& parallel) {
-    // The mesh load_scene's validation built for this shape, else a new one.
-    std::optional<Mesh> kept = kept_meshes().take(object.shape);
-    Mesh mesh = kept ? std::move(*kept) : object_mesh(object);
+                     const ParallelFor& parallel, BuiltMeshes* built) {
+    Mesh mesh = object_mesh(object, built);
     std::vector<glm::vec3> local_normals;
     const bool creased = options.crease_angle_degrees && *options.crease_angle_degrees < 180.0f;
     if (options.normals == Normals::File) {

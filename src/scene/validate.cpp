@@ -508,7 +508,7 @@ private:
             const SceneObject& object = scene_.objects[i];
             Mesh mesh;
             try {
-                mesh = object_mesh(object);
+                mesh = object_mesh(object, scene_.built_meshes.get());
             } catch (const IoError& failure) {
                 // Point at the scene's `file` key, and keep the line inside
                 // the mesh file where reading stopped.
@@ -536,7 +536,7 @@ private:
             for (const glm::vec3& p : mesh.positions)
                 hull.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
             // For the renderer of this scene, which would build it again.
-            keep_built_mesh(object.shape, std::move(mesh));
+            if (scene_.built_meshes) scene_.built_meshes->keep(object.shape, std::move(mesh));
         }
     }
 
