@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "litkit/backend.hpp"
 #include "litkit/image.hpp"
 #include "run_command.hpp"
 
@@ -144,6 +145,33 @@ TEST_F(Cli, ThreadsWithTheOpenGlBackendIsRefusedNotIgnored) {
     CliRun run = run_cli("render --backend gl --threads 2", dir);
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.output.find("--threads applies to the CPU backend"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+}
+
+TEST(Backends, TheListIsInTheEnumerationsOrderAndEachNameParsesBackToItsBackend) {
+    const auto backends = litkit::backends();
+    ASSERT_FALSE(backends.empty());
+    for (std::size_t i = 0; i < backends.size(); ++i) {
+        EXPECT_EQ(static_cast<std::size_t>(backends[i].id), i) << backends[i].name;
+        EXPECT_EQ(litkit::to_string(backends[i].id), backends[i].name);
+        EXPECT_EQ(litkit::parse_backend(backends[i].name), backends[i].id);
+        EXPECT_FALSE(backends[i].summary.empty()) << backends[i].name;
+    }
+    EXPECT_EQ(litkit::parse_backend("cpu"), litkit::Backend::Cpu);
+    EXPECT_EQ(litkit::parse_backend("gl"), litkit::Backend::Gl);
+    EXPECT_EQ(litkit::parse_backend("GL"), std::nullopt);
+    EXPECT_EQ(litkit::parse_backend(""), std::nullopt);
+    EXPECT_EQ(litkit::to_string(litkit::default_backend), "cpu");
+}
+
+TEST_F(Cli, BackendOptionOffersEveryBackendOfTheLibrarysList) {
+    CliRun help = run_cli("render --help", dir);
+    EXPECT_EQ(help.status, 0);
+    for (const litkit::BackendInfo& backend : litkit::backends()) {
+        const std::string described = std::string(backend.name) + ": " + std::string(backend.summary);
+        EXPECT_NE(help.output.find(described), std::string::npos) << described << "\n" << help.output;
+    }
+    EXPECT_EQ(run_cli("render --backend vulkan", dir).status, 2);
     EXPECT_FALSE(fs::exists(dir / "default.png"));
 }
 
@@ -319,6 +347,19 @@ TEST_F(Cli, RefusesToWriteOverAnInput) {
     const std::string before = read("scene.toml");
     CliRun run = run_cli("render scene.toml --yes -o scene.toml", dir);
     EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(read("scene.toml"), before);
+    // One wording for every command that writes a file of its own naming
+    // (render, compare, turntable).
+    EXPECT_NE(run.output.find("error: refusing to write over input file 'scene.toml'; choose "
+                              "another name with -o"),
+              std::string::npos)
+        << run.output;
+    CliRun compare = run_cli("compare scene.toml --yes --width 16 --height 16 -o scene.toml", dir);
+    EXPECT_EQ(compare.status, 2);
+    EXPECT_NE(compare.output.find("error: refusing to write over input file 'scene.toml'; choose "
+                                  "another name with -o"),
+              std::string::npos)
+        << compare.output;
     EXPECT_EQ(read("scene.toml"), before);
 }
 

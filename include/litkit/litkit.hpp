@@ -1,11 +1,12 @@
 /// \file
 /// litkit's public API in one include: scenes and their files, the lighting
-/// models and the per-point evaluator, meshes and shapes, the CPU renderer,
-/// images, the teaching tools (compare, explain, turntable) and the GLSL and
-/// C++ exporters. The OpenGL backend, in the separate library litkit::gl, has
-/// its own header: litkit/gl_renderer.hpp.
+/// models and the per-point evaluator, meshes and shapes, the list of
+/// backends, the CPU renderer, images, the teaching tools (compare, explain,
+/// turntable) and the GLSL and C++ exporters. The OpenGL backend, in the
+/// separate library litkit::gl, has its own header: litkit/gl_renderer.hpp.
 #pragma once
 
+#include "litkit/backend.hpp"
 #include "litkit/compare.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/error.hpp"

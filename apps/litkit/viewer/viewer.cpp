@@ -5,7 +5,6 @@
 #include "viewer/viewer.hpp"
 
 #include <SDL2/SDL.h>
-#include <epoxy/gl.h>
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
@@ -25,9 +24,8 @@
 
 #include "litkit/error.hpp"
 #include "core/files.hpp"
-#include "litkit/gl_renderer.hpp"
 #include "litkit/image.hpp"
-#include "litkit/render.hpp"
+#include "viewer/drawer.hpp"
 #include "viewer/watch.hpp"
 
 namespace litkit_cli {
@@ -84,86 +82,6 @@ bool inside_room(const litkit::Room& room, const glm::vec3& p) {
     return std::abs(p.x) <= room.width / 2 && std::abs(p.y) <= room.height / 2 &&
            std::abs(p.z) <= room.depth / 2;
 }
-
-// Shows an RGB image 1:1 in the window's framebuffer.
-class Screen {
-public:
-    Screen() {
-        glGenTextures(1, &texture_);
-        glGenFramebuffers(1, &framebuffer_);
-    }
-    ~Screen() {
-        glDeleteFramebuffers(1, &framebuffer_);
-        glDeleteTextures(1, &texture_);
-    }
-    void show(const litkit::Image& image, int drawable_width, int drawable_height) {
-        glBindTexture(GL_TEXTURE_2D, texture_);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        if (image.width != width_ || image.height != height_) {
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB,
-                         GL_UNSIGNED_BYTE, image.rgb.data());
-            width_ = image.width;
-            height_ = image.height;
-        } else {
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGB,
-                            GL_UNSIGNED_BYTE, image.rgb.data());
-        }
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glViewport(0, 0, drawable_width, drawable_height);
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        // Row 0 of the image is the top (docs/spec.md §1); OpenGL's is the
-        // bottom: flip while copying, pixel for pixel.
-        glBlitFramebuffer(0, 0, image.width, image.height, 0, drawable_height,
-                          image.width, drawable_height - image.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    }
-
-private:
-    GLuint texture_ = 0, framebuffer_ = 0;
-    int width_ = 0, height_ = 0;
-};
-
-// A renderer of either backend behind one face. The CPU backend renders into
-// an image that the screen shows; the OpenGL backend draws with the window's
-// own context (the same shaders as `render --backend gl`) and copies its
-// frame into the window.
-class Drawer {
-public:
-    Drawer(const litkit::Scene& scene, bool gl, int threads) {
-        litkit::RenderOptions options;
-        options.threads = threads;
-        if (gl) gpu_ = std::make_unique<litkit::GlRenderer>(scene, options, litkit::GlRenderer::CurrentContext{});
-        else cpu_ = std::make_unique<litkit::Renderer>(scene, options);
-    }
-    void update(const litkit::Scene& scene) {
-        if (cpu_) cpu_->update(scene);
-        else gpu_->update(scene);
-    }
-    void render(litkit::Image& image) {
-        if (cpu_) cpu_->render_into(image);
-    }
-    void present(Screen& screen, const litkit::Image& image, int width, int height) {
-        if (cpu_) {
-            screen.show(image, width, height);
-            return;
-        }
-        glViewport(0, 0, width, height);
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        gpu_->draw_to(0);
-    }
-    // The picture as it stands (for S).
-    void snapshot(litkit::Image& image) {
-        if (gpu_) gpu_->render_into(image);
-    }
-
-private:
-    std::unique_ptr<litkit::Renderer> cpu_;
-    std::unique_ptr<litkit::GlRenderer> gpu_;
-};
 
 // "scene-1.png", "scene-2.png", …: the first name not taken.
 fs::path next_screenshot_name(const std::string& stem) {
@@ -440,7 +358,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 const auto start = clock_type::now();
                 const litkit::Scene shown = shown_scene();
                 try {
-                    if (!drawer) drawer = std::make_unique<Drawer>(shown, options.gl_backend, options.threads);
+                    if (!drawer) drawer = std::make_unique<Drawer>(options.backend, shown, options.threads);
                     else drawer->update(shown);
                     drawer->render(image);
                     shown_width = shown.output.width;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "litkit/backend.hpp"
 #include "litkit/scene.hpp"
 #include "crossing.hpp"
 #include "modules.hpp"
@@ -15,7 +16,7 @@ namespace litkit_cli {
 struct ViewerOptions {
     std::vector<std::filesystem::path> files;  // empty: the built-in default scene
     std::string title;                         // the scene's name for the title bar
-    bool gl_backend = false;
+    litkit::Backend backend = litkit::default_backend;
     int threads = 0;
     bool show_panel = true;
     // A measurement (docs/performance.md): orbit this many frames, 2° each,
