@@ -589,7 +589,7 @@ TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
     }
 }
 
-// Issue 16: a built-in shape is built once for load_scene's validation and
+// A built-in shape is built once for load_scene's validation and
 // the renderer of the same scene (scene/world_mesh.hpp's keep_built_mesh).
 namespace {
 
