@@ -48,15 +48,7 @@ std::string json_string(const std::string& text) {
     return out + "\"";
 }
 
-std::string light_type(const Light& light) {
-    struct Name {
-        std::string operator()(const AmbientLight&) const { return "ambient"; }
-        std::string operator()(const DirectionalLight&) const { return "directional"; }
-        std::string operator()(const PointLight&) const { return "point"; }
-        std::string operator()(const SpotLight&) const { return "spot"; }
-    };
-    return std::visit(Name{}, light.kind);
-}
+std::string light_type(const Light& light) { return std::string(light_kind_name(light.kind)); }
 
 std::string light_label(const Scene& scene, std::size_t index) {
     const SceneLight& light = scene.lights[index];

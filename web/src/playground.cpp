@@ -286,9 +286,9 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_models() {
         out += json_string(litkit::to_string(model.id));
     }
     out += "],\"shading\":[";
-    for (int s = 0; s < litkit::shading_count; ++s) {
-        if (s) out += ',';
-        out += json_string(litkit::to_string(static_cast<litkit::Shading>(s)));
+    for (std::string_view name : litkit::shading_names) {
+        if (out.back() != '[') out += ',';
+        out += json_string(name);
     }
     out += "],\"default_scene\":" + json_string(litkit::default_scene_toml()) + "}";
     return reply(std::move(out));
