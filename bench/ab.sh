@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Interleaved A/B timing of two litkit binaries on the CPU backend (issue 16):
+# Interleaved A/B timing of two litkit binaries on the CPU backend:
 #   bench/ab.sh OLD_LITKIT NEW_LITKIT [ROUNDS] [FRAMES]
 # Each round runs every scene on both binaries, alternating which goes first;
 # prints per scene the median over rounds of `litkit bench`'s median frame

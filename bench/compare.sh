@@ -29,8 +29,8 @@
 #   memory         peak resident set size of the 1080p runs (GNU time -v)
 #
 # Default: 5 rounds of 20 frames. --quick: one round of 3 frames, a smoke
-# run for CI (no timing is asserted). --targets: only the rows issue 16 sets
-# targets for (the default scene to PNG at 800x600, and at 1920x1080 the
+# run for CI (no timing is asserted). --targets: only the rows with
+# targets (docs/performance.md) (the default scene to PNG at 800x600, and at 1920x1080 the
 # cube, the full-screen fill and the 261k sphere), with their picture
 # checks; 5 whole-process runs per round. Installs what it needs through
 # `scripts/install-deps.sh --bench`. Builds what it runs in build-bench/
@@ -51,7 +51,7 @@ rounds=5
 frames=20
 whole_runs=10   # hyperfine runs per command per round
 whole_warmup=2
-targets=no      # --targets: only the rows issue 16 sets targets for
+targets=no      # --targets: only the rows with targets
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) rounds=1; frames=3; whole_runs=2; whole_warmup=1 ;;

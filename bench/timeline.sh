@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench/timeline.sh RUNS LITKIT [ARGUMENTS...]
 #
-# Where the time of a whole `litkit` process goes (issue 16, session 8):
+# Where the time of a whole `litkit` process goes:
 # uprobes at the entry and return of its phases' functions (main, the
 # default scene, the renderer's constructor, render_into, encode_png, the
 # PNG's halves, write_file_atomically), RUNS runs recorded with

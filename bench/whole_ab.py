@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Interleaved whole-process timing of a few commands (issue 16, session 8).
+"""Interleaved whole-process timing of a few commands.
 
     bench/whole_ab.py RUNS 'CMD A' 'CMD B' [...]
 

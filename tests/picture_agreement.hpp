@@ -1,5 +1,5 @@
 // How close two pictures of one scene are, away from the edges of objects:
-// the measure issue 4 sets for the OpenGL backend and the exported program
+// the measure the OpenGL backend and the exported program are held to
 // against the CPU backend (≥ 99.5% of such pixels within 2/255).
 //
 // "Away from edges": the CPU backend draws the scene once more with every

@@ -1,4 +1,4 @@
-// The C++ API as a program calls it (issue 15): the renderers' preconditions
+// The C++ API as a program calls it: the renderers' preconditions
 // (check_renderable), meshes given in memory (MeshDataShape), and the
 // inside-out warning for closed meshes whose faces wind clockwise.
 #include <gtest/gtest.h>

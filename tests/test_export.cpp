@@ -1,5 +1,5 @@
-// `litkit export` and `litkit render --backend gl` through the command line
-// (issue 4): the exported GLSL compiles, the exported C++ program builds with
+// `litkit export` and `litkit render --backend gl` through the command line:
+// the exported GLSL compiles, the exported C++ program builds with
 // the system's compiler and draws the picture `litkit render` draws, and the
 // OpenGL backend's errors are clear.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The OpenGL backend against the CPU backend (issue 4): the same scene drawn
+// The OpenGL backend against the CPU backend: the same scene drawn
 // by both must agree within 2/255 on at least 99.5% of the pixels that lie
 // away from the edges of objects (tests/picture_agreement.hpp). Runs on
 // whatever EGL offers: Mesa's llvmpipe in CI.

@@ -1,4 +1,4 @@
-// Programs specialised to a scene's lights (issue 16): glsl::generate with
+// Programs specialised to a scene's lights: glsl::generate with
 // the lights writes one block per light instead of the general loop, and the
 // OpenGL backend draws with them up to 16 lights. The shaders must compile,
 // hold the blocks in the scene's order, and draw the CPU backend's picture,

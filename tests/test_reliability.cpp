@@ -1,4 +1,4 @@
-// Issue 14: output written whole to what the user named and nothing else;
+// docs/reliability.md: output written whole to what the user named and nothing else;
 // input bounded, located and exact; scale. Real files, real device nodes and
 // FIFOs made in a temporary folder (the tests run as root), real signals.
 #include <gtest/gtest.h>

@@ -278,7 +278,7 @@ TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
     EXPECT_EQ(centre[2], background[2]);
 }
 
-// A prepared scene (issue 15): another observer, image size, models,
+// A prepared scene: another observer, image size, models,
 // material or light re-renders without building the meshes again, and draws
 // what a fresh renderer of the changed scene draws.
 TEST(Renderer, UpdateKeepsTheMeshesUnlessAnObjectMoves) {

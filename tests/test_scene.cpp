@@ -983,7 +983,7 @@ TEST(DefaultScene, HasOneCubeOnePointLightAtTheCentreAndPhong) {
 }  // namespace
 }  // namespace litkit
 
-// One catch for every error the library throws (issue 15): litkit::Error,
+// One catch for every error the library throws: litkit::Error,
 // with the place of the first problem.
 TEST(Errors, EveryLibraryErrorIsALitkitErrorWithItsPlace) {
     static_assert(std::is_base_of_v<litkit::Error, litkit::SceneError>);

@@ -18,6 +18,8 @@
 
 #include "litkit/error.hpp"
 #include "litkit/lighting.hpp"
+#include "litkit/limits.hpp"
+#include "litkit/mesh.hpp"
 
 namespace {
 
@@ -204,4 +206,99 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
     }
     for (const litkit::ReflectionModel& model : litkit::reflection_models())
         EXPECT_TRUE(models.count(std::string(model.name))) << "no worked example of " << model.name;
+}
+
+// The docs' tables of choices and limits against the library's one list of
+// each (lighting.hpp, mesh.hpp, limits.hpp): a name added to the library and
+// not to docs/scene-format.md, or the other way round, fails here.
+namespace {
+
+std::string read_doc(const std::string& name) {
+    std::ifstream in(std::string(LITKIT_SOURCE_DIR) + "/docs/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The line of docs/scene-format.md that starts with `start` (the one table row).
+std::string table_row(const std::string& start) {
+    std::istringstream in(read_doc("scene-format.md"));
+    std::string found;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind(start, 0) != 0) continue;
+        EXPECT_TRUE(found.empty()) << "two rows start with " << start;
+        found = line;
+    }
+    EXPECT_FALSE(found.empty()) << "no row of docs/scene-format.md starts with " << start;
+    return found;
+}
+
+// The "quoted" names in column `column` (0: the key) of a table row, in order.
+std::vector<std::string> quoted_names(const std::string& whole_row, int column) {
+    std::size_t begin = 1;  // after the row's first '|'
+    for (int skipped = 0; skipped < column; ++skipped) begin = whole_row.find('|', begin) + 1;
+    const std::string row = whole_row.substr(begin, whole_row.find('|', begin) - begin);
+    std::vector<std::string> names;
+    for (std::size_t at = row.find("`\""); at != std::string::npos; at = row.find("`\"", at)) {
+        const std::size_t end = row.find("\"`", at + 2);
+        if (end == std::string::npos) break;
+        names.push_back(row.substr(at + 2, end - at - 2));
+        at = end + 2;
+    }
+    return names;
+}
+
+template <class Names>
+std::vector<std::string> strings(const Names& names) {
+    std::vector<std::string> out;
+    for (const auto& name : names) out.emplace_back(name);
+    return out;
+}
+
+}  // namespace
+
+TEST(DocsTables, ReflectionModelsAreTheLibrarysList) {
+    std::vector<std::string> library;
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        library.emplace_back(model.name);
+    // [lighting]'s rows: key, type, allowed, meaning.
+    EXPECT_EQ(quoted_names(table_row("| `reflection` | choice | `\""), 2), library);
+}
+
+TEST(DocsTables, ShadingModelsAreTheLibrarysList) {
+    EXPECT_EQ(quoted_names(table_row("| `shading` | choice | `\""), 2),
+              strings(litkit::shading_names));
+}
+
+TEST(DocsTables, NormalsWeightingsAreTheLibrarysList) {
+    EXPECT_EQ(quoted_names(table_row("| `normals` | choice, default"), 2),
+              strings(litkit::normals_names));
+}
+
+TEST(DocsTables, LightTypesAreTheLibrarysList) {
+    // [[lights]]' rows: key, type, default, allowed, meaning.
+    EXPECT_EQ(quoted_names(table_row("| `type` | choice | **required** | `\"ambient\""), 3),
+              strings(litkit::light_kind_names));
+}
+
+TEST(DocsTables, EveryImageSizeRangeIsTheLibrarysLimit) {
+    const std::string range = "1–" + std::to_string(litkit::max_image_side);
+    EXPECT_NE(table_row("| `width` | integer |").find(range), std::string::npos);
+    EXPECT_NE(table_row("| `height` | integer |").find(range), std::string::npos);
+    // Any "1–N" of five digits or more in the pages users read is an image side.
+    for (const char* name : {"scene-format.md", "spec.md", "user-guide.md", "python.md",
+                             "cpp-api.md", "design.md"}) {
+        const std::string text = read_doc(name);
+        for (std::size_t at = text.find("1–"); at != std::string::npos;
+             at = text.find("1–", at + 1)) {
+            const std::size_t first = at + std::string("1–").size();
+            std::size_t digits = 0;
+            while (first + digits < text.size() &&
+                   std::isdigit(static_cast<unsigned char>(text[first + digits])))
+                ++digits;
+            if (digits >= 5) {
+                EXPECT_EQ(text.substr(at, first - at + digits), range) << "in docs/" << name;
+            }
+        }
+    }
 }

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,7 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
+#include "core/json.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -485,6 +487,30 @@ TEST_F(Teach, ExplainJsonHasTheKeysAndParses) {
     const auto background = cli("explain --pixel 0,0 --json");
     ASSERT_EQ(background.status, 0);
     EXPECT_EQ(background.output, "{\"pixel\": [0, 0], \"hit\": false, \"rgb\": [25, 28, 36]}\n");
+}
+
+// JSON has no NaN or infinity: the one writer (core/json.hpp) that explain
+// --json and the playground share writes a non-finite number as null.
+TEST(JsonWriter, NonFiniteNumbersAreNullAndStringsAreEscaped) {
+    EXPECT_EQ(litkit::json::number(std::nanf("")), "null");
+    EXPECT_EQ(litkit::json::number(INFINITY), "null");
+    EXPECT_EQ(litkit::json::number(-std::numeric_limits<double>::infinity()), "null");
+    EXPECT_EQ(litkit::json::number(0.1f), "0.1");
+    EXPECT_EQ(litkit::json::number(0.25), "0.25");
+    EXPECT_EQ(litkit::json::number(-3.0f), "-3");
+    EXPECT_EQ(litkit::json::string("a\"b\\c\nd\x01"), "\"a\\\"b\\\\c\\u000ad\\u0001\"");
+    EXPECT_EQ(litkit::json::string("é"), "\"é\"");
+}
+
+TEST(JsonWriter, ExplainJsonWritesNonFiniteValuesAsNull) {
+    const litkit::Scene scene = litkit::default_scene();
+    litkit::PointEvaluation point;
+    point.normal = {0.0f, 1.0f, 0.0f};
+    point.terms.total = {std::nanf(""), INFINITY, 1.0f};
+    const std::string json = litkit::evaluation_json(point, scene, litkit::Reflection::Phong);
+    EXPECT_NE(json.find("\"sum\": [null, null, 1]"), std::string::npos) << json;
+    EXPECT_EQ(json.find("nan"), std::string::npos) << json;
+    EXPECT_EQ(json.find("inf"), std::string::npos) << json;
 }
 
 TEST_F(Teach, ExplainGouraudListsTheThreeVertices) {

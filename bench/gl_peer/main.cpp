@@ -1,6 +1,6 @@
 // litkit_gl_peer: the scenes of bench/ drawn by a plain OpenGL program, the
 // way a competent programmer (or a tutorial) writes one for a given scene.
-// bench/compare.sh measures both litkit backends against it (issue 16).
+// bench/compare.sh measures both litkit backends against it.
 //
 // It is deliberately separate from litkit's OpenGL backend and shader
 // generator (src/gl, src/codegen): nothing of those is linked or included.

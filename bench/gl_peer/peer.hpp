@@ -1,5 +1,5 @@
 // litkit_gl_peer: the plain OpenGL program bench/compare.sh measures litkit
-// against (issue 16). See main.cpp for what it is and why.
+// against. See main.cpp for what it is and why.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,8 +1,10 @@
 /// \file
 /// The one home of the lighting equations (docs/spec.md §4). Every path evaluates
-/// these templates: the scalar `shade` with T = float, the renderer's
-/// per-vertex and per-pixel stages, and later SIMD batches and the GLSL
-/// generator, each with its own T.
+/// these templates: the scalar `shade` and the CPU renderer's per-vertex and
+/// per-triangle stages with T = float, its per-pixel kernels with SIMD batches,
+/// and the GLSL generator and `explain` with their own T. Each equation cites
+/// its source where it has one. Adding a reflection model: see the recipe at
+/// litkit::Reflection (lighting.hpp).
 ///
 /// A T must provide + - * /, comparisons yielding a mask, and, found by
 /// argument-dependent lookup (or declared below for float): sqrt, pow, max,
@@ -146,7 +148,8 @@ struct Incidence {
     T factor;
 };
 
-/// DD7 generalised: f = 1 / (k_c + k_l·d + k_q·d²); `coefficients` is
+/// DD7 generalised: f = 1 / (k_c + k_l·d + k_q·d²), the attenuation of
+/// OpenGL's fixed-function lights; `coefficients` is
 /// (k_c, k_l, k_q), `distance` is d in world units.
 template <class T>
 T distance_attenuation(const Vec3<T>& coefficients, const T& distance) {
@@ -220,7 +223,33 @@ struct NoTrace {
 };
 
 /// D and S for a model of the diffuse + specular form at unit normal N, unit
-/// L, unit V (docs/spec.md §4, second table, and §9.1).
+/// L, unit V (docs/spec.md §4, second table, and §9.1). Sources, model by model:
+/// - lambert: J. H. Lambert, Photometria (1760), the cosine law.
+/// - half-lambert: Valve's wrapped diffuse, J. Mitchell, G. McTaggart and
+///   C. Green, "Shading in Valve's Source Engine", SIGGRAPH 2006 course.
+/// - phong: B. T. Phong, "Illumination for Computer Generated Pictures",
+///   Communications of the ACM 18(6), 1975.
+/// - blinn-phong: J. F. Blinn, "Models of Light Reflection for Computer
+///   Synthesized Pictures", SIGGRAPH 1977 (the half vector).
+/// - oren-nayar: M. Oren and S. K. Nayar, "Generalization of Lambert's
+///   Reflectance Model", SIGGRAPH 1994 (the qualitative model, A and B).
+/// - cook-torrance: R. L. Cook and K. E. Torrance, "A Reflectance Model for
+///   Computer Graphics", ACM TOG 1(1), 1982, with the GGX distribution of
+///   B. Walter, S. R. Marschner, H. Li and K. E. Torrance, "Microfacet Models
+///   for Refraction through Rough Surfaces", EGSR 2007; the height-correlated
+///   Smith visibility of E. Heitz, "Understanding the Masking-Shadowing
+///   Function in Microfacet-Based BRDFs", JCGT 3(2), 2014; the Fresnel
+///   approximation of C. Schlick, "An Inexpensive BRDF Model for
+///   Physically-based Rendering", Computer Graphics Forum 13(3), 1994; and
+///   a = roughness² of B. Burley, "Physically-Based Shading at Disney",
+///   SIGGRAPH 2012 course.
+/// - toon: cel shading's quantised diffuse and on-or-off highlight, with no
+///   one source.
+/// - minnaert: M. Minnaert, "The Reciprocity Principle in Lunar Photometry",
+///   Astrophysical Journal 93, 1941 (D = n_l^k · n_v^(k−1)).
+/// - gooch (reflect below): A. Gooch, B. Gooch, P. Shirley and E. Cohen, "A
+///   Non-Photorealistic Lighting Model for Automatic Technical
+///   Illustration", SIGGRAPH 1998.
 template <Reflection R, class T, class Trace = NoTrace>
 Terms<T> reflection_terms(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
                           const MaterialT<T>& material, const Trace& trace = {}) {
@@ -311,8 +340,8 @@ struct Reflected {
 };
 
 /// The reflection of model R: k_d·D·C and S for the diffuse + specular
-/// models; for `gooch` (docs/spec.md §9.1) the cool-to-warm wash
-/// t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
+/// models; for `gooch` (docs/spec.md §9.1; Gooch et al. 1998, above) the
+/// cool-to-warm wash t·warm + (1 − t)·cool, t = (1 + N·L)/2, and the phong S.
 template <Reflection R, class T, class Trace = NoTrace>
 Reflected<T> reflect(const Vec3<T>& normal, const Vec3<T>& to_light, const Vec3<T>& to_eye,
                      const MaterialT<T>& material, const Trace& trace = {}) {
@@ -385,8 +414,8 @@ struct PreparedLight {
 PreparedLight prepare_light(const Light& light);
 
 /// The one place a run-time Reflection becomes a template argument: calls
-/// f(std::integral_constant<Reflection, R>{}) for the model chosen. Adding a
-/// reflection model adds its case here and its branch in reflection_terms.
+/// f(std::integral_constant<Reflection, R>{}) for the model chosen, for every
+/// model from 0 to reflection_count − 1: a new model needs nothing here.
 template <int I = 0, class F>
 decltype(auto) with_reflection(Reflection reflection, F&& f) {
     constexpr auto model = static_cast<Reflection>(I);

@@ -46,11 +46,25 @@ inline Rgb8 to_rgb8(const glm::vec3& color) {
 }
 
 /// The reflection models of docs/spec.md §4 (IM1–IM4) and §9.1 (LC2): how
-/// much light a surface point sends to the eye. The order is the spec's, and
-/// that of every list users see (validation's names, `litkit view`'s keys
-/// 1–9). The models are one list: this enumeration, its row in
-/// reflection_models() and its branch in equations::reflect are all a new
-/// model needs; every path (scalar, SIMD, GLSL, validation) follows from them.
+/// much light a surface point sends to the eye (each equation, with its
+/// source, in litkit/equations.hpp). The order is the spec's, and that of
+/// every list users see (validation's names, `litkit view`'s keys 1–9).
+///
+/// Adding a model (the one recipe):
+/// 1. its enumerator here, last (and reflection_count below counted from it);
+/// 2. its row in reflection_models() (src/lighting/lighting.cpp): the
+///    scene-file name and a one-line summary;
+/// 3. its branch in equations::reflection_terms (D and S), or in
+///    equations::reflect where it changes the diffuse colour, as gooch does;
+/// 4. a parameter of its own, if any: a field of Material and of
+///    equations::MaterialT and a line in for_each_model_parameter;
+/// 5. its rows in docs/spec.md §9.1 and docs/scene-format.md (tests/test_spec.cpp
+///    checks the names against reflection_models()) and its tests in
+///    tests/test_lighting.cpp.
+/// Every path follows from these: the scalar and SIMD evaluators and the GLSL
+/// generator (through equations::with_reflection), the exported program,
+/// `explain`, validation, the command line, the Python binding and the
+/// playground (through reflection_models()).
 enum class Reflection {
     Lambert,       ///< "lambert": diffuse only, D = max(N·L, 0).
     HalfLambert,   ///< "half-lambert": Valve's wrapped diffuse, D = (0.5·N·L + 0.5)².
@@ -78,7 +92,9 @@ struct ReflectionModel {
 /// Every model, in the order of the enumeration.
 std::span<const ReflectionModel> reflection_models();
 /// Where the lighting is evaluated, and with which normal (docs/spec.md §3,
-/// DD8–DD10, and §9.2).
+/// DD8–DD10, and §9.2). Gouraud shading is H. Gouraud's, "Continuous Shading
+/// of Curved Surfaces", IEEE Transactions on Computers C-20(6), 1971; Phong
+/// shading (normals interpolated) is B. T. Phong's of 1975 (equations.hpp).
 enum class Shading {
     Flat,     ///< "flat": once per triangle, at its centroid with the face normal.
     Gouraud,  ///< "gouraud": at the vertices, colours interpolated across the triangle.
@@ -87,11 +103,16 @@ enum class Shading {
 };
 /// How many Shading values there are.
 inline constexpr int shading_count = static_cast<int>(Shading::Faceted) + 1;
+/// The shading models' scene-file names, in the enumeration's order: the one
+/// list that to_string, parse_shading, the scene reader's "did you mean", the
+/// command line, the Python binding, the playground and the docs' tables
+/// (checked by tests/test_spec.cpp) all take.
+inline constexpr std::array<std::string_view, shading_count> shading_names{"flat", "gouraud",
+                                                                           "phong", "faceted"};
 
-/// Scene-file spelling: "lambert", "half-lambert", "phong", "blinn-phong",
-/// "oren-nayar", "cook-torrance", "toon", "minnaert", "gooch".
+/// Scene-file spelling: the model's name in reflection_models().
 std::string_view to_string(Reflection reflection);
-/// Scene-file spelling: "flat", "gouraud", "phong", "faceted".
+/// Scene-file spelling: the model's name in shading_names.
 std::string_view to_string(Shading shading);
 /// The model a scene-file spelling names (exact, lower case), or nothing.
 std::optional<Reflection> parse_reflection(std::string_view text);
@@ -177,6 +198,18 @@ struct SpotLight {
 };
 /// Any one of the light kinds: a closed set behind one variant (docs/spec.md §4 table).
 using LightKind = std::variant<AmbientLight, DirectionalLight, PointLight, SpotLight>;
+/// The light kinds' scene-file names (a [[lights]] entry's `type`), in the
+/// variant's order: the one list that the scene reader, the GLSL generator's
+/// comments, `explain`, the Python binding and the docs' tables take.
+inline constexpr std::array<std::string_view, std::variant_size_v<LightKind>> light_kind_names{
+    "ambient", "directional", "point", "spot"};
+/// The scene-file name of `kind`'s alternative ("spot" for a SpotLight). Never throws.
+inline std::string_view light_kind_name(const LightKind& kind) {
+    return light_kind_names[kind.index()];
+}
+/// The kind a scene-file name gives (exact, lower case), with the kind's
+/// defaults, or nothing.
+std::optional<LightKind> parse_light_kind(std::string_view text);
 
 /// A light: its kind (with the kind's geometry), colour and intensity.
 struct Light {

@@ -15,6 +15,7 @@
 #include "litkit/glsl.hpp"
 #include "litkit/image.hpp"
 #include "litkit/lighting.hpp"
+#include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"

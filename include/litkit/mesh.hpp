@@ -36,7 +36,11 @@ struct Mesh {
 inline constexpr std::uint32_t missing_file_normal = 0xffffffffu;
 
 /// docs/spec.md §9.2: how a vertex normal weights the faces that share the
-/// vertex, or the mesh file's own normals.
+/// vertex, or the mesh file's own normals. The mean is Gouraud's (1971); the
+/// angle weights are G. Thürmer and C. A. Wüthrich's, "Computing Vertex
+/// Normals from Polygonal Facets", Journal of Graphics Tools 3(1), 1998;
+/// "max" is N. Max's, "Weights for Computing Vertex Normals from Facet
+/// Normals", Journal of Graphics Tools 4(2), 1999.
 enum class Normals {
     Mean,   ///< "mean": each face's unit normal counts once (DD9, the default).
     Area,   ///< "area": weighted by the face's area (e1 × e2).
@@ -46,7 +50,12 @@ enum class Normals {
 };
 /// How many Normals values there are.
 inline constexpr int normals_count = static_cast<int>(Normals::File) + 1;
-/// Scene-file spelling: "mean", "area", "angle", "max", "file".
+/// The weightings' scene-file names, in the enumeration's order: the one list
+/// that the scene reader's "did you mean", the command line, the Python
+/// binding and the docs' tables (checked by tests/test_spec.cpp) take.
+inline constexpr std::array<std::string_view, normals_count> normals_names{"mean", "area", "angle",
+                                                                           "max", "file"};
+/// Scene-file spelling: the weighting's name in normals_names.
 std::string_view to_string(Normals normals);
 /// The weighting a scene-file spelling names (exact, lower case), or nothing.
 std::optional<Normals> parse_normals(std::string_view text);

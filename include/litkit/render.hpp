@@ -68,7 +68,7 @@ bool kernel_set_available(RenderOptions::Kernels kernels);
 ///
 /// Preconditions, checked (never assumed, in any build type): the scene
 /// passes check_renderable (litkit/validate.hpp: every value in range and
-/// finite, a usable view, an image of 1–16384 pixels each way, in-memory
+/// finite, a usable view, an image of 1–max_image_side pixels each way, in-memory
 /// meshes well formed), else SceneError listing every problem; options.threads
 /// in 0–max_render_threads, else ArgumentError. Both derive from
 /// litkit::Error. The constructor and update() check them; a failed update

@@ -22,6 +22,7 @@
 
 #include "litkit/error.hpp"
 #include "litkit/lighting.hpp"
+#include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
 
 namespace litkit {
@@ -60,9 +61,9 @@ struct Observer {
 
 /// The picture: its size, background and gamma (the `[output]` table).
 struct OutputSettings {
-    /// Width in pixels, 1–16384.
+    /// Width in pixels, 1–max_image_side (16384, litkit/limits.hpp).
     int width = 800;
-    /// Height in pixels, 1–16384.
+    /// Height in pixels, 1–max_image_side.
     int height = 600;
     /// The colour of every pixel no object covers, linear 0–1 per channel
     /// like every colour of the API (Rgb8); such a pixel is

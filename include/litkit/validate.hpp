@@ -32,7 +32,7 @@ std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangl
 /// What every renderer (Renderer, render(), GlRenderer, compare, explain,
 /// turntable) checks before it draws, and throws as SceneError listing every
 /// problem: the rules of docs/spec.md §6 about each value on its own — sizes
-/// in range (the image 1–16384 pixels each way, shape parameters, scale),
+/// in range (the image 1–max_image_side pixels each way, shape parameters, scale),
 /// every number finite (a NaN or infinite camera, light or object), a usable
 /// view (fov, near < far, look_at not the position, up not parallel to the
 /// view), materials and lights in range, an in-memory mesh checked as a

@@ -40,6 +40,8 @@ from ._litkit import (  # noqa: F401  (the public API)
     SceneError,
     default_scene_toml,
     encode_png,
+    light_types,
+    normals_weightings,
     reflection_models,
     shade,
     shade_terms,
@@ -49,8 +51,8 @@ from ._litkit import (  # noqa: F401  (the public API)
 __all__ = [
     "ArgumentError", "Diagnostic", "Error", "Image", "IoError", "Light", "Material",
     "Observer", "Output", "Renderer", "Room", "Scene", "SceneError", "SceneWarning", "check",
-    "default_scene", "default_scene_toml", "dumps", "encode_png", "load", "loads",
-    "reflection_models", "render", "shade", "shade_terms", "shading_models",
+    "default_scene", "default_scene_toml", "dumps", "encode_png", "light_types", "load", "loads",
+    "normals_weightings", "reflection_models", "render", "shade", "shade_terms", "shading_models",
 ]
 
 

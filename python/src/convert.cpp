@@ -8,24 +8,24 @@ namespace litkit_python {
 
 namespace {
 
-// "unknown reflection model 'fong'; expected one of: lambert, half-lambert, ..."
-[[noreturn]] void unknown(const std::string& what, const std::string& name,
-                          const std::vector<std::string_view>& known) {
-    std::string list;
-    for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-    throw litkit::ArgumentError("unknown " + what + " '" + name + "'; expected one of: " + list);
-}
-
 int checked_size(const char* what, int pixels) {
     // The command line's --width/--height range (docs/reliability.md).
-    if (pixels < 1 || pixels > 16384) {
-        throw litkit::ArgumentError(std::string(what) + " must be 1-16384 pixels, found " +
+    if (pixels < 1 || pixels > litkit::max_image_side) {
+        throw litkit::ArgumentError(std::string(what) + " must be 1-" +
+                                    std::to_string(litkit::max_image_side) + " pixels, found " +
                                     std::to_string(pixels));
     }
     return pixels;
 }
 
 }  // namespace
+
+void unknown(const std::string& what, const std::string& name,
+             std::span<const std::string_view> known) {
+    std::string list;
+    for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+    throw litkit::ArgumentError("unknown " + what + " '" + name + "'; expected one of: " + list);
+}
 
 litkit::Reflection reflection_from(const std::string& name) {
     if (const auto reflection = litkit::parse_reflection(name)) return *reflection;
@@ -37,18 +37,12 @@ litkit::Reflection reflection_from(const std::string& name) {
 
 litkit::Shading shading_from(const std::string& name) {
     if (const auto shading = litkit::parse_shading(name)) return *shading;
-    std::vector<std::string_view> known;
-    for (int i = 0; i < litkit::shading_count; ++i)
-        known.push_back(litkit::to_string(static_cast<litkit::Shading>(i)));
-    unknown("shading model", name, known);
+    unknown("shading model", name, litkit::shading_names);
 }
 
 litkit::Normals normals_from(const std::string& name) {
     if (const auto normals = litkit::parse_normals(name)) return *normals;
-    std::vector<std::string_view> known;
-    for (int i = 0; i < litkit::normals_count; ++i)
-        known.push_back(litkit::to_string(static_cast<litkit::Normals>(i)));
-    unknown("normals weighting", name, known);
+    unknown("normals weighting", name, litkit::normals_names);
 }
 
 void Overrides::apply_to(litkit::Scene& scene) const {
@@ -59,9 +53,10 @@ void Overrides::apply_to(litkit::Scene& scene) const {
 }
 
 int checked_threads(int threads) {
-    if (threads < 0 || threads > 1024) {
-        throw litkit::ArgumentError("threads must be 0-1024 (0: one per hardware thread), found " +
-                                    std::to_string(threads));
+    if (threads < 0 || threads > litkit::max_render_threads) {
+        throw litkit::ArgumentError(
+            "threads must be 0-" + std::to_string(litkit::max_render_threads) +
+            " (0: one per hardware thread), found " + std::to_string(threads));
     }
     return threads;
 }

@@ -8,7 +8,9 @@
 
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "litkit/litkit.hpp"
 
@@ -50,9 +52,14 @@ namespace py = pybind11;
 litkit::Reflection reflection_from(const std::string& name);
 litkit::Shading shading_from(const std::string& name);
 litkit::Normals normals_from(const std::string& name);
+// Throws litkit::ArgumentError: "unknown reflection model 'fong'; expected one
+// of: lambert, half-lambert, ..." (`known`: the library's list of names).
+[[noreturn]] void unknown(const std::string& what, const std::string& name,
+                          std::span<const std::string_view> known);
 
 // The replacements render() takes for the scene's own values; each checked
-// as the command line checks its options (sizes 1-16384, threads 0-1024).
+// as the command line checks its options (sizes 1-max_image_side, threads
+// 0-max_render_threads).
 struct Overrides {
     std::optional<std::string> reflection;
     std::optional<std::string> shading;

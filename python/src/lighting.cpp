@@ -12,20 +12,8 @@ namespace litkit_python {
 
 namespace {
 
-const char* type_of(const litkit::Light& light) {
-    return std::visit(
-        [](const auto& kind) -> const char* {
-            using Kind = std::decay_t<decltype(kind)>;
-            if constexpr (std::is_same_v<Kind, litkit::AmbientLight>)
-                return "ambient";
-            else if constexpr (std::is_same_v<Kind, litkit::DirectionalLight>)
-                return "directional";
-            else if constexpr (std::is_same_v<Kind, litkit::PointLight>)
-                return "point";
-            else
-                return "spot";
-        },
-        light.kind);
+std::string type_of(const litkit::Light& light) {
+    return std::string(litkit::light_kind_name(light.kind));
 }
 
 // A light from the keys a scene file's [[lights]] entry has (colour 0-1 here,
@@ -40,45 +28,40 @@ litkit::Light make_light(const std::string& type, std::optional<glm::vec3> posit
     auto need = [&](const char* key, bool given) {
         if (!given) throw litkit::ArgumentError("Light: a " + type + " light needs a " + key);
     };
+    const std::optional<litkit::LightKind> kind = litkit::parse_light_kind(type);
+    if (!kind) unknown("light type", type, litkit::light_kind_names);
     litkit::Light light;
     light.color = color;
     light.intensity = intensity;
-    const bool spot = type == "spot";
-    if (!spot) {
+    light.kind = *kind;
+    if (!std::holds_alternative<litkit::SpotLight>(light.kind)) {
         refuse("cutoff", cutoff.has_value());
         refuse("exponent", exponent.has_value());
         refuse("penumbra", penumbra.has_value());
     }
-    if (type == "ambient") {
+    if (std::holds_alternative<litkit::AmbientLight>(light.kind)) {
         refuse("position", position.has_value());
         refuse("direction", direction.has_value());
         refuse("attenuation", attenuation.has_value());
-        light.kind = litkit::AmbientLight{};
-    } else if (type == "directional") {
+    } else if (auto* directional = std::get_if<litkit::DirectionalLight>(&light.kind)) {
         refuse("position", position.has_value());
         refuse("attenuation", attenuation.has_value());
         need("direction", direction.has_value());
-        light.kind = litkit::DirectionalLight{*direction};
-    } else if (type == "point") {
+        directional->direction = *direction;
+    } else if (auto* point = std::get_if<litkit::PointLight>(&light.kind)) {
         refuse("direction", direction.has_value());
         need("position", position.has_value());
-        litkit::PointLight point{*position};
-        if (attenuation) point.attenuation = *attenuation;
-        light.kind = point;
-    } else if (spot) {
+        point->position = *position;
+        if (attenuation) point->attenuation = *attenuation;
+    } else if (auto* cone = std::get_if<litkit::SpotLight>(&light.kind)) {
         need("position", position.has_value());
         need("direction", direction.has_value());
-        litkit::SpotLight cone;
-        cone.position = *position;
-        cone.direction = *direction;
-        if (attenuation) cone.attenuation = *attenuation;
-        if (cutoff) cone.cutoff_degrees = *cutoff;
-        if (exponent) cone.exponent = *exponent;
-        if (penumbra) cone.penumbra = *penumbra;
-        light.kind = cone;
-    } else {
-        throw litkit::ArgumentError("unknown light type '" + type +
-                                    "'; expected one of: ambient, directional, point, spot");
+        cone->position = *position;
+        cone->direction = *direction;
+        if (attenuation) cone->attenuation = *attenuation;
+        if (cutoff) cone->cutoff_degrees = *cutoff;
+        if (exponent) cone->exponent = *exponent;
+        if (penumbra) cone->penumbra = *penumbra;
     }
     return light;
 }
@@ -191,10 +174,14 @@ void bind_lighting(py::module_& module) {
         return names;
     });
     module.def("shading_models", [] {
-        std::vector<std::string> names;
-        for (int i = 0; i < litkit::shading_count; ++i)
-            names.emplace_back(litkit::to_string(static_cast<litkit::Shading>(i)));
-        return names;
+        return std::vector<std::string>(litkit::shading_names.begin(), litkit::shading_names.end());
+    });
+    module.def("normals_weightings", [] {
+        return std::vector<std::string>(litkit::normals_names.begin(), litkit::normals_names.end());
+    });
+    module.def("light_types", [] {
+        return std::vector<std::string>(litkit::light_kind_names.begin(),
+                                        litkit::light_kind_names.end());
     });
 }
 

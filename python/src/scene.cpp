@@ -6,6 +6,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "convert.hpp"
@@ -13,6 +15,17 @@
 namespace litkit_python {
 
 namespace {
+
+// Scene.normals' docstring, naming the weightings from the library's list.
+const char* normals_doc() {
+    static const std::string doc = [] {
+        std::string names;
+        for (std::string_view name : litkit::normals_names)
+            names += (names.empty() ? "" : ", ") + std::string(name);
+        return "How vertex normals weight faces (" + names + "), or None";
+    }();
+    return doc.c_str();
+}
 
 const char* severity_name(litkit::Severity severity) {
     return severity == litkit::Severity::Error ? "error" : "warning";
@@ -105,7 +118,7 @@ void bind_scene(py::module_& module) {
             [](litkit::Scene& s, std::optional<std::string> name) {
                 s.normals = name ? std::optional(normals_from(*name)) : std::nullopt;
             },
-            "How vertex normals weight faces (mean, area, angle, max, file), or None")
+            normals_doc())
         .def_readwrite("crease_angle", &litkit::Scene::crease_angle_degrees)
         .def_property_readonly("light_count",
                                [](const litkit::Scene& s) { return s.lights.size(); })

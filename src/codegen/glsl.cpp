@@ -299,20 +299,20 @@ std::string unrolled_shade(std::span<const Light> lights) {
         "    vec3 total = vec3(0.0);\n";
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const std::string at = "u_lights[" + std::to_string(i) + "].";
-        const std::size_t kind = lights[i].kind.index();
-        if (kind == 0) {
+        const LightKind& kind = lights[i].kind;
+        const std::string kind_name(light_kind_name(kind));
+        if (std::holds_alternative<AmbientLight>(kind)) {
             text += "    total = total + ambient_term(" + at + "radiance, u_material);  // light " +
-                    std::to_string(i) + ": ambient\n";
+                    std::to_string(i) + ": " + kind_name + "\n";
             continue;
         }
-        text += "    {  // light " + std::to_string(i) + ": " +
-                (kind == 1 ? "directional" : kind == 2 ? "point" : "spot") + "\n";
-        if (kind == 1) {
+        text += "    {  // light " + std::to_string(i) + ": " + kind_name + "\n";
+        if (std::holds_alternative<DirectionalLight>(kind)) {
             text += "        Incidence incidence = directional_incidence(" + at + "direction);\n";
         } else {
             text += "        Incidence incidence = point_incidence(" + at + "position, " + at +
                     "attenuation, p);\n";
-            if (kind == 3)
+            if (std::holds_alternative<SpotLight>(kind))
                 text += "        incidence.factor = incidence.factor * spot_factor(incidence.to_light, " +
                         at + "direction,\n                                           " + at +
                         "cos_cutoff, " + at + "cos_inner, " + at + "exponent);\n";

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "litkit/error.hpp"
+#include "litkit/limits.hpp"
 #include "core/files.hpp"
 #include "cpu/thread_pool.hpp"
 
@@ -45,9 +46,9 @@ constexpr std::size_t split_from_bytes = std::size_t{512} << 10;
 // afresh (deflateReset). zlib slides its window once a stream has taken 65,274
 // bytes, and every 32 KiB after: it moves the window and rewrites its two
 // 64 KiB hash tables, which its run-length strategy never reads. That was a
-// third of the time (docs/performance.md, "Session 8": the default scene
-// 5.7 -> 3.6 ms, 1920×1080 20.5 -> 11.9 ms, the files as small). Only runs
-// within a stream are found, so a restart costs at most a run cut in two,
+// third of the time (docs/performance.md, "zlib: streams that never slide":
+// the default scene 5.7 -> 3.6 ms, 1920×1080 20.5 -> 11.9 ms, the files as
+// small). Only runs within a stream are found, so a restart costs at most a run cut in two,
 // the block it ends (a new one starts, with its own codes) and an empty
 // stored block (5 bytes). A row longer than 65,274 bytes (21,758 pixels)
 // still slides within itself, as before.
@@ -114,7 +115,7 @@ void reserve_quarter(Piece& piece, const Image& image, int rows) {
 // Level 1, the default: Intel's ISA-L (igzip, Debian's libisal-dev), whose
 // deflate at its level 1 makes files about as small as zlib's level 1 with
 // its run-length strategy, five times as fast (docs/performance.md,
-// "Session 10": 0.7 against 3.8 ms for the default 800×600 picture on one
+// "The PNG: ISA-L": 0.7 against 3.8 ms for the default 800×600 picture on one
 // thread). Rows go in batches of about this many filtered bytes.
 constexpr std::size_t isal_batch_bytes = std::size_t{64} << 10;
 
@@ -319,9 +320,11 @@ Image read_png(const std::filesystem::path& path) {
         throw IoError(path.string(), reason);
     }
     decoded.format = PNG_FORMAT_RGB;
-    if (decoded.width > 16384 || decoded.height > 16384) {
+    constexpr auto largest = static_cast<png_uint_32>(max_image_side);
+    if (decoded.width > largest || decoded.height > largest) {
         png_image_free(&decoded);
-        throw IoError(path.string(), "image larger than 16384 pixels on a side");
+        throw IoError(path.string(), "image larger than " + std::to_string(max_image_side) +
+                                         " pixels on a side");
     }
     Image image(static_cast<int>(decoded.width), static_cast<int>(decoded.height));
     if (!png_image_finish_read(&decoded, nullptr, image.rgb.data(), 0, nullptr)) {

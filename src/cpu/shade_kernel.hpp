@@ -11,6 +11,7 @@
 
 #include "litkit/equations.hpp"
 #include "litkit/lighting.hpp"
+#include "litkit/limits.hpp"
 #include "scene/camera.hpp"  // RowRays
 
 namespace litkit::kernels {
@@ -25,7 +26,7 @@ constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
 constexpr float guard_band = 2.0f;
 
 // Window coordinates in fixed point stay below this (the guard band keeps
-// them within 3 image sizes of 16384 pixels, far less), so that edge
+// them within 3 image sizes of max_image_side pixels, far less), so that edge
 // functions never overflow.
 constexpr double largest_fixed_coordinate = 0x1p30;
 
@@ -71,12 +72,13 @@ struct ColorRun {
 // per front-facing triangle or clipped piece): fixed-point window
 // coordinates and the perspective weight of each corner, ordered so that
 // its doubled area is positive, and its pixel bounds (inclusive, inside the
-// image: at most 16384, so 16 bits).
+// image: at most max_image_side, so 16 bits).
+static_assert(max_image_side <= 0x7fff, "RasterTriangle's pixel bounds are 15 bits");
 struct RasterTriangle {
     std::array<std::int32_t, 3> x, y;
     std::array<float, 3> weight;  // 1/w of each corner over the doubled area
     std::int16_t min_x, max_x, min_y;
-    std::uint16_t max_y_small;  // max_y (≤ 16384) and, in the top bit, small()
+    std::uint16_t max_y_small;  // max_y (≤ max_image_side) and, in the top bit, small()
     int max_y() const { return max_y_small & 0x7fff; }
     // At most small_triangle (pipeline.hpp: 8 pixels, in fixed point) wide and
     // high: its edge functions fit 32 bits by far (|E| ≤ 2 · 2048² inside its

@@ -308,7 +308,8 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, Co
     // hold the core the one it waits for needs. Spinning only, a whole run
     // now and then drew at 20 ms a frame instead of 3.6; spinning 4096
     // pauses before the wait, 4 runs in 16 at 6-8.5 ms; waiting only, none
-    // in 28 (docs/performance.md, session 7).
+    // in 28 (docs/performance.md, "The GL read-back's helper: waiting, not
+    // spinning").
     auto wait_until = [](const std::atomic<int>& counter, int at_least) {
         for (int seen; (seen = counter.load(std::memory_order_acquire)) < at_least;)
             counter.wait(seen, std::memory_order_acquire);

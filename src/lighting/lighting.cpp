@@ -38,12 +38,6 @@ constexpr std::array<ReflectionModel, reflection_count> reflection_table{{
      "diffuse colour t*warm + (1 - t)*cool, t = (1 + N.L)/2, cool = min(0.2*kd*C +\n"
      "(0, 0, 0.4), 1), warm = min(0.6*kd*C + (0.4, 0.4, 0), 1); S as phong."},
 }};
-constexpr std::array<std::pair<Shading, std::string_view>, 4> shading_names{{
-    {Shading::Flat, "flat"},
-    {Shading::Gouraud, "gouraud"},
-    {Shading::Phong, "phong"},
-    {Shading::Faceted, "faceted"},
-}};
 }  // namespace
 
 std::span<const ReflectionModel> reflection_models() { return reflection_table; }
@@ -55,9 +49,8 @@ std::string_view to_string(Reflection reflection) {
 }
 
 std::string_view to_string(Shading shading) {
-    for (const auto& [value, name] : shading_names)
-        if (value == shading) return name;
-    return "?";
+    const auto index = static_cast<std::size_t>(shading);
+    return index < shading_names.size() ? shading_names[index] : "?";
 }
 
 std::optional<Reflection> parse_reflection(std::string_view text) {
@@ -67,9 +60,17 @@ std::optional<Reflection> parse_reflection(std::string_view text) {
 }
 
 std::optional<Shading> parse_shading(std::string_view text) {
-    for (const auto& [value, name] : shading_names)
-        if (name == text) return value;
+    for (std::size_t i = 0; i < shading_names.size(); ++i)
+        if (shading_names[i] == text) return static_cast<Shading>(i);
     return std::nullopt;
+}
+
+std::optional<LightKind> parse_light_kind(std::string_view text) {
+    std::optional<LightKind> kind;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((light_kind_names[I] == text ? (void)kind.emplace(std::in_place_index<I>) : void()), ...);
+    }(std::make_index_sequence<light_kind_names.size()>());
+    return kind;
 }
 
 namespace equations {

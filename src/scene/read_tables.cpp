@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <utility>
+#include <variant>
 
 #include "scene/reader.hpp"
 #include "scene/words.hpp"
@@ -54,19 +55,28 @@ std::span<const std::string_view> reflection_names() {
     }();
     return names;
 }
-constexpr std::array<std::string_view, 4> shading_names{"flat", "gouraud", "phong", "faceted"};
-constexpr std::array<std::string_view, 5> normals_names{"mean", "area", "angle", "max", "file"};
+// The keys of each light kind beyond those every light has.
+struct LightKeys {
+    std::vector<std::string_view> operator()(const AmbientLight&) const { return {}; }
+    std::vector<std::string_view> operator()(const DirectionalLight&) const {
+        return {"direction"};
+    }
+    std::vector<std::string_view> operator()(const PointLight&) const {
+        return {"position", "attenuation"};
+    }
+    std::vector<std::string_view> operator()(const SpotLight&) const {
+        return {"position", "attenuation", "direction", "cutoff", "exponent", "penumbra"};
+    }
+};
 
+// The light types are the library's one list (lighting.hpp's light_kind_names).
 const Family& light_family() {
-    static const Family family{
-        "light",
-        {"name", "type", "color", "intensity"},
-        {
-            {"ambient", {}},
-            {"directional", {"direction"}},
-            {"point", {"position", "attenuation"}},
-            {"spot", {"position", "attenuation", "direction", "cutoff", "exponent", "penumbra"}},
-        }};
+    static const Family family = [] {
+        Family light{"light", {"name", "type", "color", "intensity"}, {}};
+        for (std::string_view name : light_kind_names)
+            light.types.push_back({name, std::visit(LightKeys{}, *parse_light_kind(name))});
+        return light;
+    }();
     return family;
 }
 
@@ -284,31 +294,25 @@ void SceneReader::read_light(const Site& site) {
     if (auto intensity = read_number(site, "intensity")) light.light.intensity = *intensity;
     if (!type) return;
 
-    if (type->type == "ambient") {
-        light.light.kind = AmbientLight{};
-    } else if (type->type == "directional") {
-        DirectionalLight directional;
+    LightKind kind = *parse_light_kind(type->type);  // a type of light_family(): a kind
+    if (auto* directional = std::get_if<DirectionalLight>(&kind)) {
         require(site, "direction");
-        if (auto direction = read_vec3(site, "direction")) directional.direction = *direction;
-        light.light.kind = directional;
-    } else if (type->type == "point") {
-        PointLight point;
+        if (auto direction = read_vec3(site, "direction")) directional->direction = *direction;
+    } else if (auto* point = std::get_if<PointLight>(&kind)) {
         require(site, "position");
-        if (auto position = read_vec3(site, "position")) point.position = *position;
-        if (auto attenuation = read_vec3(site, "attenuation")) point.attenuation = *attenuation;
-        light.light.kind = point;
-    } else {
-        SpotLight spot;
+        if (auto position = read_vec3(site, "position")) point->position = *position;
+        if (auto attenuation = read_vec3(site, "attenuation")) point->attenuation = *attenuation;
+    } else if (auto* spot = std::get_if<SpotLight>(&kind)) {
         require(site, "position");
         require(site, "direction");
-        if (auto position = read_vec3(site, "position")) spot.position = *position;
-        if (auto attenuation = read_vec3(site, "attenuation")) spot.attenuation = *attenuation;
-        if (auto direction = read_vec3(site, "direction")) spot.direction = *direction;
-        if (auto cutoff = read_number(site, "cutoff")) spot.cutoff_degrees = *cutoff;
-        if (auto exponent = read_number(site, "exponent")) spot.exponent = *exponent;
-        if (auto penumbra = read_number(site, "penumbra")) spot.penumbra = *penumbra;
-        light.light.kind = spot;
+        if (auto position = read_vec3(site, "position")) spot->position = *position;
+        if (auto attenuation = read_vec3(site, "attenuation")) spot->attenuation = *attenuation;
+        if (auto direction = read_vec3(site, "direction")) spot->direction = *direction;
+        if (auto cutoff = read_number(site, "cutoff")) spot->cutoff_degrees = *cutoff;
+        if (auto exponent = read_number(site, "exponent")) spot->exponent = *exponent;
+        if (auto penumbra = read_number(site, "penumbra")) spot->penumbra = *penumbra;
     }
+    light.light.kind = kind;
 }
 
 void SceneReader::read_object(const Site& site) {

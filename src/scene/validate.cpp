@@ -3,6 +3,8 @@
 // located at the offending value.
 #include "litkit/validate.hpp"
 
+#include "litkit/limits.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -277,8 +279,8 @@ private:
 
     void check_output() {
         const OutputSettings& output = scene_.output;
-        integer_in(output.width, 1, 16384, "output.width", "output", "width");
-        integer_in(output.height, 1, 16384, "output.height", "output", "height");
+        integer_in(output.width, 1, max_image_side, "output.width", "output", "width");
+        integer_in(output.height, 1, max_image_side, "output.height", "output", "height");
         at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
         finite(output.gamma, "output.gamma", "output", "gamma");
         // Colours are 0–1 (lighting.hpp); a file's 0–255 always is.
@@ -694,9 +696,9 @@ private:
     bool observer_ok_ = true;           // the whole view is usable
     bool observer_position_ok_ = true;  // the position alone is usable
     std::vector<bool> shape_ok_;
-    std::vector<std::optional<std::vector<glm::vec3>>> hulls_;
-    std::vector<Box> boxes_;
-    bool relations_ = true;  // false: check_renderable (no relations between entities)  // each hull's bounding box (empty: no hull)
+    std::vector<std::optional<std::vector<glm::vec3>>> hulls_;  // build_hulls(), per object
+    std::vector<Box> boxes_;  // each hull's bounding box (empty: no hull)
+    bool relations_ = true;   // false: check_renderable (no relations between entities)
     std::unordered_map<std::string, std::vector<std::size_t>> light_positions_;
 };
 

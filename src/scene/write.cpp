@@ -59,18 +59,19 @@ std::string light_text(const SceneLight& scene_light) {
     const Light& light = scene_light.light;
     std::string text = "\n[[lights]]\n";
     if (!scene_light.name.empty()) text += "name = " + quoted(scene_light.name) + "\n";
+    text += "type = \"" + std::string(light_kind_name(light.kind)) + "\"\n";
     std::visit(
         [&](const auto& kind) {
             using K = std::decay_t<decltype(kind)>;
             if constexpr (std::is_same_v<K, AmbientLight>) {
-                text += "type = \"ambient\"\n";
+                // no keys of its own
             } else if constexpr (std::is_same_v<K, DirectionalLight>) {
-                text += "type = \"directional\"\ndirection = " + vec3(kind.direction) + "\n";
+                text += "direction = " + vec3(kind.direction) + "\n";
             } else if constexpr (std::is_same_v<K, PointLight>) {
-                text += "type = \"point\"\nposition = " + vec3(kind.position) +
+                text += "position = " + vec3(kind.position) +
                         "\nattenuation = " + vec3(kind.attenuation) + "\n";
             } else {
-                text += "type = \"spot\"\nposition = " + vec3(kind.position) +
+                text += "position = " + vec3(kind.position) +
                         "\nattenuation = " + vec3(kind.attenuation) + "\ndirection = " +
                         vec3(kind.direction) + "\ncutoff = " + number(kind.cutoff_degrees) +
                         "\nexponent = " + number(kind.exponent) + "\npenumbra = " +

@@ -2,6 +2,7 @@
 // each, with the models' names in a margin.
 #include "litkit/compare.hpp"
 #include "litkit/error.hpp"
+#include "litkit/limits.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -49,8 +50,9 @@ CompareGrid compare_models(const Scene& scene, const CompareOptions& options) {
         options.tile_width > 0 ? options.tile_width : std::max(1, scene.output.width / 2);
     grid.tile_height =
         options.tile_height > 0 ? options.tile_height : std::max(1, scene.output.height / 2);
-    if (grid.tile_width > 16384 || grid.tile_height > 16384)
-        throw ArgumentError("compare_models: tiles are at most 16384 pixels a side");
+    if (grid.tile_width > max_image_side || grid.tile_height > max_image_side)
+        throw ArgumentError("compare_models: tiles are at most " + std::to_string(max_image_side) +
+                            " pixels a side");
 
     const Reflection own_reflection = scene.reflection.value_or(options.fallback_reflection);
     const Shading own_shading = scene.shading.value_or(options.fallback_shading);

@@ -1,6 +1,5 @@
 // litkit explain's two forms: text for reading, JSON for programs.
 #include <charconv>
-#include <cstdio>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -8,6 +7,8 @@
 #include <variant>
 
 #include "litkit/explain.hpp"
+
+#include "core/json.hpp"
 
 namespace litkit {
 
@@ -26,37 +27,12 @@ std::string vec(const glm::vec3& v) {
     return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
 }
 
-std::string json_number(float value) { return std::isfinite(value) ? num(value) : "null"; }
+// A vector as a JSON array (core/json.hpp: a non-finite component is null).
 std::string json_vec(const glm::vec3& v) {
-    return "[" + json_number(v.x) + ", " + json_number(v.y) + ", " + json_number(v.z) + "]";
-}
-std::string json_string(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (u < 0x20) {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", u);
-            out += escaped;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
+    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
 }
 
-std::string light_type(const Light& light) {
-    struct Name {
-        std::string operator()(const AmbientLight&) const { return "ambient"; }
-        std::string operator()(const DirectionalLight&) const { return "directional"; }
-        std::string operator()(const PointLight&) const { return "point"; }
-        std::string operator()(const SpotLight&) const { return "spot"; }
-    };
-    return std::visit(Name{}, light.kind);
-}
+std::string light_type(const Light& light) { return std::string(light_kind_name(light.kind)); }
 
 std::string light_label(const Scene& scene, std::size_t index) {
     const SceneLight& light = scene.lights[index];
@@ -120,15 +96,15 @@ std::string json_lights(const PointEvaluation& point, const Scene& scene) {
     std::string out = "[";
     for (std::size_t i = 0; i < point.terms.lights.size() && i < scene.lights.size(); ++i) {
         const LightTerms& terms = point.terms.lights[i];
-        out += std::string(i ? ", " : "") + "{\"name\": " + json_string(scene.lights[i].name) +
-               ", \"type\": " + json_string(light_type(scene.lights[i].light)) +
+        out += std::string(i ? ", " : "") + "{\"name\": " + json::string(scene.lights[i].name) +
+               ", \"type\": " + json::string(light_type(scene.lights[i].light)) +
                ", \"to_light\": " + json_vec(terms.to_light) +
-               ", \"factor\": " + json_number(terms.factor) +
-               ", \"diffuse\": " + json_number(terms.diffuse) +
-               ", \"specular\": " + json_number(terms.specular) + ", \"intermediates\": {";
+               ", \"factor\": " + json::number(terms.factor) +
+               ", \"diffuse\": " + json::number(terms.diffuse) +
+               ", \"specular\": " + json::number(terms.specular) + ", \"intermediates\": {";
         for (std::size_t k = 0; k < terms.intermediates.size(); ++k)
-            out += std::string(k ? ", " : "") + json_string(terms.intermediates[k].first) + ": " +
-                   json_number(terms.intermediates[k].second);
+            out += std::string(k ? ", " : "") + json::string(terms.intermediates[k].first) + ": " +
+                   json::number(terms.intermediates[k].second);
         out += "}, \"contribution\": " + json_vec(terms.contribution) + "}";
     }
     return out + "]";
@@ -210,16 +186,16 @@ std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
     std::string out = "{\"pixel\": [" + std::to_string(e.x) + ", " + std::to_string(e.y) +
                       "], \"hit\": " + (e.hit ? "true" : "false");
     if (e.hit) {
-        const std::string weights = "[" + json_number(e.weights[0]) + ", " +
-                                    json_number(e.weights[1]) + ", " + json_number(e.weights[2]) +
+        const std::string weights = "[" + json::number(e.weights[0]) + ", " +
+                                    json::number(e.weights[1]) + ", " + json::number(e.weights[2]) +
                                     "]";
         out += ", \"object\": " +
-               json_string(e.object_name.empty() ? "objects[" + std::to_string(e.object) + "]"
+               json::string(e.object_name.empty() ? "objects[" + std::to_string(e.object) + "]"
                                                  : e.object_name) +
                ", \"object_index\": " + std::to_string(e.object) +
                ", \"triangle\": " + std::to_string(e.triangle) +
-               ", \"reflection\": " + json_string(std::string(to_string(e.reflection))) +
-               ", \"shading\": " + json_string(std::string(to_string(e.shading))) +
+               ", \"reflection\": " + json::string(std::string(to_string(e.reflection))) +
+               ", \"shading\": " + json::string(std::string(to_string(e.shading))) +
                ", \"clipped\": " + (e.clipped ? "true" : "false") + ", \"weights\": " + weights;
         if (e.shading == Shading::Gouraud) {
             out += ", \"vertices\": [";
@@ -243,7 +219,7 @@ std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
             out += ", \"position\": " + json_vec(v.position) +
                    ", \"normal\": " + json_vec(v.normal) + ", \"lights\": " + json_lights(v, scene);
         }
-        out += ", \"sum\": " + json_vec(e.sum) + ", \"gamma\": " + json_number(e.gamma);
+        out += ", \"sum\": " + json_vec(e.sum) + ", \"gamma\": " + json::number(e.gamma);
     }
     out += ", \"rgb\": [" + std::to_string(e.rgb[0]) + ", " + std::to_string(e.rgb[1]) + ", " +
            std::to_string(e.rgb[2]) + "]}";
@@ -267,7 +243,7 @@ std::string evaluation_text(const PointEvaluation& point, const Scene& scene, Re
 std::string evaluation_json(const PointEvaluation& point, const Scene& scene,
                             Reflection reflection) {
     const float g = scene.output.gamma;
-    return "{\"reflection\": " + json_string(std::string(to_string(reflection))) +
+    return "{\"reflection\": " + json::string(std::string(to_string(reflection))) +
            ", \"position\": " + json_vec(point.position) +
            ", \"normal\": " + json_vec(point.normal) +
            ", \"lights\": " + json_lights(point, scene) +

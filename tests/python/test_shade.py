@@ -76,11 +76,23 @@ def test_normal_that_is_not_unit_is_refused():
 
 
 def test_bad_lights_and_models_are_refused():
-    with pytest.raises(litkit.ArgumentError):
+    with pytest.raises(litkit.ArgumentError) as raised:
         litkit.Light("laser", position=(0, 0, 0))
+    assert str(raised.value).endswith("expected one of: " + ", ".join(litkit.light_types()))
     with pytest.raises(litkit.ArgumentError):
         litkit.Light("point")  # no position
     with pytest.raises(litkit.ArgumentError):
         litkit.Light("ambient", direction=(0, -1, 0))
     with pytest.raises(litkit.ArgumentError):
         litkit.shade("fong", litkit.Material(), [bulb()], POINT, UP, EYE)
+
+
+def test_the_lists_of_names_are_the_librarys():
+    assert litkit.light_types() == ["ambient", "directional", "point", "spot"]
+    assert litkit.normals_weightings() == ["mean", "area", "angle", "max", "file"]
+    assert litkit.shading_models() == ["flat", "gouraud", "phong", "faceted"]
+    keys = {"ambient": {}, "directional": {"direction": (0.0, -1.0, 0.0)},
+            "point": {"position": (0.0, 1.0, 0.0)},
+            "spot": {"position": (0.0, 1.0, 0.0), "direction": (0.0, -1.0, 0.0)}}
+    for kind in litkit.light_types():
+        assert litkit.Light(kind, **keys[kind]).type == kind

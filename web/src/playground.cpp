@@ -25,6 +25,8 @@
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 
+#include "core/json.hpp"
+
 namespace {
 
 // The page's scene file: relative mesh paths resolve in its folder, where the
@@ -44,46 +46,17 @@ State& state() {
     return s;
 }
 
-void append_json_string(std::string& out, std::string_view text) {
-    out += '"';
-    for (unsigned char c : text) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        default:
-            if (c < 0x20) {
-                static const char hex[] = "0123456789abcdef";
-                out += "\\u00";
-                out += hex[c >> 4];
-                out += hex[c & 15];
-            } else {
-                out += static_cast<char>(c);
-            }
-        }
-    }
-    out += '"';
-}
-
-std::string json_string(std::string_view text) {
-    std::string out;
-    append_json_string(out, text);
-    return out;
-}
-
-std::string json_number(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
+// JSON text from the library's one writer (src/core/json.hpp): shortest
+// numbers, and null for a number that is not finite.
+namespace json = litkit::json;
 
 std::string json_diagnostic(const litkit::Diagnostic& d) {
     return "{\"line\":" + std::to_string(d.location.line) +
            ",\"column\":" + std::to_string(d.location.column) +
-           ",\"severity\":" + json_string(d.severity == litkit::Severity::Error ? "error" : "warning") +
-           ",\"message\":" + json_string(d.message) + ",\"text\":" + json_string(d.to_string()) + "}";
+           ",\"severity\":" +
+           json::string(d.severity == litkit::Severity::Error ? "error" : "warning") +
+           ",\"message\":" + json::string(d.message) +
+           ",\"text\":" + json::string(d.to_string()) + "}";
 }
 
 std::string json_diagnostics(const std::vector<litkit::Diagnostic>& list) {
@@ -96,7 +69,7 @@ std::string json_diagnostics(const std::vector<litkit::Diagnostic>& list) {
 }
 
 std::string json_vec3(const glm::vec3& v) {
-    return "[" + json_number(v.x) + "," + json_number(v.y) + "," + json_number(v.z) + "]";
+    return "[" + json::number(v.x) + "," + json::number(v.y) + "," + json::number(v.z) + "]";
 }
 
 // Where each value the sliders change is written in the text (line, column
@@ -112,7 +85,7 @@ std::string json_locations(const litkit::Scene& scene) {
         const auto found = scene.locations.find(path);
         if (found == scene.locations.end()) continue;
         if (out.size() > 1) out += ',';
-        out += json_string(path) + ":[" + std::to_string(found->second.line) + "," +
+        out += json::string(path) + ":[" + std::to_string(found->second.line) + "," +
                std::to_string(found->second.column) + "]";
     }
     return out + "}";
@@ -120,17 +93,18 @@ std::string json_locations(const litkit::Scene& scene) {
 
 // The first object's material and the first light, for the sliders.
 std::string json_values(const litkit::Scene& scene) {
-    std::string out = "{\"room\":[" + json_number(scene.room.width) + "," +
-                      json_number(scene.room.height) + "," + json_number(scene.room.depth) + "]";
+    std::string out = "{\"room\":[" + json::number(scene.room.width) + "," +
+                      json::number(scene.room.height) + "," + json::number(scene.room.depth) + "]";
     if (!scene.objects.empty()) {
         const litkit::Material& m = scene.objects[0].material;
         out += ",\"material\":{\"color\":" + json_vec3(m.color * 255.0f) +
-               ",\"ka\":" + json_number(m.ka) + ",\"kd\":" + json_number(m.kd) +
-               ",\"ks\":" + json_number(m.ks) + ",\"shininess\":" + json_number(m.shininess) + "}";
+               ",\"ka\":" + json::number(m.ka) + ",\"kd\":" + json::number(m.kd) +
+               ",\"ks\":" + json::number(m.ks) +
+               ",\"shininess\":" + json::number(m.shininess) + "}";
     }
     if (!scene.lights.empty()) {
         const litkit::Light& light = scene.lights[0].light;
-        out += ",\"light\":{\"intensity\":" + json_number(light.intensity);
+        out += ",\"light\":{\"intensity\":" + json::number(light.intensity);
         if (const auto* point = std::get_if<litkit::PointLight>(&light.kind))
             out += ",\"position\":" + json_vec3(point->position);
         else if (const auto* spot = std::get_if<litkit::SpotLight>(&light.kind))
@@ -175,7 +149,7 @@ std::string draw(const litkit::Scene& scene) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     to_rgba(s.image, s.rgba);
     return "\"width\":" + std::to_string(s.image.width) + ",\"height\":" +
-           std::to_string(s.image.height) + ",\"ms\":" + json_number(ms) +
+           std::to_string(s.image.height) + ",\"ms\":" + json::number(ms) +
            ",\"threads\":" + std::to_string(s.renderer->thread_count());
 }
 
@@ -217,7 +191,8 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_render(const char* text, const char* ref
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const bool lighting_given = scene.reflection && scene.shading;
         choose_models(scene, reflection, shading);
-        std::string answer = "{\"ok\":true," + draw(scene) + ",\"parse_ms\":" + json_number(parse_ms) +
+        std::string answer = "{\"ok\":true," + draw(scene) +
+                             ",\"parse_ms\":" + json::number(parse_ms) +
                              ",\"warnings\":" + json_diagnostics(scene.warnings) +
                              ",\"lighting_given\":" + (lighting_given ? "true" : "false") +
                              ",\"values\":" + json_values(scene) +
@@ -267,7 +242,7 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_explain(int x, int y) {
                      ",\"hit\":" + (e.hit ? "true" : "false") + ",\"rgb\":[" +
                      std::to_string(e.rgb[0]) + "," + std::to_string(e.rgb[1]) + "," +
                      std::to_string(e.rgb[2]) + "],\"text\":" +
-                     json_string(litkit::explanation_text(e, *s.scene)) + "}");
+                     json::string(litkit::explanation_text(e, *s.scene)) + "}");
     } catch (const std::exception& e) {
         return reply(failure(e));
     }
@@ -283,14 +258,14 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_models() {
     for (const litkit::ReflectionModel& model : litkit::reflection_models()) {
         if (!first) out += ',';
         first = false;
-        out += json_string(litkit::to_string(model.id));
+        out += json::string(litkit::to_string(model.id));
     }
     out += "],\"shading\":[";
-    for (int s = 0; s < litkit::shading_count; ++s) {
-        if (s) out += ',';
-        out += json_string(litkit::to_string(static_cast<litkit::Shading>(s)));
+    for (std::string_view name : litkit::shading_names) {
+        if (out.back() != '[') out += ',';
+        out += json::string(name);
     }
-    out += "],\"default_scene\":" + json_string(litkit::default_scene_toml()) + "}";
+    out += "],\"default_scene\":" + json::string(litkit::default_scene_toml()) + "}";
     return reply(std::move(out));
 }
 
