@@ -2,14 +2,21 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "backend_renderer.hpp"
 #include "usage_error.hpp"
 #include "litkit/lighting.hpp"
+#include "litkit/limits.hpp"
+#include "litkit/mesh.hpp"
+#include "litkit/render.hpp"
 #include "litkit/validate.hpp"
 
 namespace litkit_cli {
@@ -28,6 +35,12 @@ litkit::Scene load(const std::vector<std::string>& files,
     return scene;
 }
 
+// A library list of names (litkit::shading_names, ...) as CLI11 takes it.
+template <std::size_t N>
+std::vector<std::string> names_of(const std::array<std::string_view, N>& names) {
+    return {names.begin(), names.end()};
+}
+
 }  // namespace
 
 litkit::Backend SceneArguments::backend_id() const {
@@ -36,7 +49,7 @@ litkit::Backend SceneArguments::backend_id() const {
 
 void add_normals_options(CLI::App* command, SceneArguments& arguments) {
     command->add_option("--normals", arguments.normals, "How vertex normals weight faces")
-        ->check(CLI::IsMember({"mean", "area", "angle", "max", "file"}));
+        ->check(CLI::IsMember(names_of(litkit::normals_names)));
     command
         ->add_option("--crease-angle", arguments.crease_angle,
                      "Split normals between faces more than this many degrees apart")
@@ -56,16 +69,16 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("SCENE", arguments.scenes,
                         "Scene files (TOML), merged in order; none: the built-in default scene");
     command->add_option("--width", arguments.width, "Image width in pixels")
-        ->check(CLI::Range(1, 16384));
+        ->check(CLI::Range(1, litkit::max_image_side));
     command->add_option("--height", arguments.height, "Image height in pixels")
-        ->check(CLI::Range(1, 16384));
+        ->check(CLI::Range(1, litkit::max_image_side));
     std::vector<std::string> reflections;
     for (const litkit::ReflectionModel& model : litkit::reflection_models())
         reflections.emplace_back(model.name);
     command->add_option("--reflection", arguments.reflection, "Reflection model")
         ->check(CLI::IsMember(reflections));
     command->add_option("--shading", arguments.shading, "Shading model")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong", "faceted"}));
+        ->check(CLI::IsMember(names_of(litkit::shading_names)));
     add_normals_options(command, arguments);
     command->add_option("--max-triangles", arguments.max_triangles,
                         "The scene-wide triangle budget (docs/reliability.md)")
@@ -73,7 +86,7 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->capture_default_str();
     if (!rendering) return;
     command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
-        ->check(CLI::Range(0, 1024));
+        ->check(CLI::Range(0, litkit::max_render_threads));
     // litkit::backends(): every backend with what it is.
     std::vector<std::string> backends;
     std::string backend_help;

@@ -25,6 +25,7 @@
 #include "litkit/error.hpp"
 #include "core/files.hpp"
 #include "litkit/image.hpp"
+#include "litkit/limits.hpp"
 #include "viewer/drawer.hpp"
 #include "viewer/watch.hpp"
 
@@ -181,8 +182,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             if (key_shading) shown.shading = key_shading;
             int w = 0, h = 0;
             SDL_GL_GetDrawableSize(window, &w, &h);
-            shown.output.width = std::clamp(w, 1, 16384);
-            shown.output.height = std::clamp(h, 1, 16384);
+            shown.output.width = std::clamp(w, 1, litkit::max_image_side);
+            shown.output.height = std::clamp(h, 1, litkit::max_image_side);
             return shown;
         };
         auto set_title = [&] {
