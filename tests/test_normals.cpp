@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/parallel.hpp"                // internal (src/)
-#include "cpu/thread_pool.hpp"              // internal
+#include "core/thread_pool.hpp"              // internal
 #include "geometry/corner_angle.hpp"       // internal
 #include "geometry/creased_normals.hpp"    // internal
 #include "scene/world_mesh.hpp"            // internal

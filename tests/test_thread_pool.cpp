@@ -1,4 +1,4 @@
-// The CPU renderer's thread pool (src/cpu/thread_pool.hpp): every index of a
+// The CPU renderer's thread pool (src/core/thread_pool.hpp): every index of a
 // job runs exactly once, on a thread of the pool, whatever the counts; the
 // first exception comes back to the caller and the pool stays usable.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cpu/thread_pool.hpp"
+#include "core/thread_pool.hpp"
 
 namespace {
 

@@ -22,7 +22,7 @@
 #include "litkit/error.hpp"
 #include "litkit/limits.hpp"
 #include "core/files.hpp"
-#include "cpu/thread_pool.hpp"
+#include "core/thread_pool.hpp"
 
 namespace litkit {
 

@@ -33,7 +33,7 @@
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "cpu/shade_kernel.hpp"
-#include "cpu/thread_pool.hpp"
+#include "core/thread_pool.hpp"
 #include "scene/camera.hpp"
 
 namespace litkit {
