@@ -210,7 +210,8 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
 
 // The docs' tables of choices and limits against the library's one list of
 // each (lighting.hpp, mesh.hpp, limits.hpp): a name added to the library and
-// not to docs/scene-format.md, or the other way round, fails here.
+// not to docs/scene-format.md's tables or docs/user-guide.md's options, or
+// the other way round, fails here.
 namespace {
 
 std::string read_doc(const std::string& name) {
@@ -220,16 +221,16 @@ std::string read_doc(const std::string& name) {
     return text.str();
 }
 
-// The line of docs/scene-format.md that starts with `start` (the one table row).
-std::string table_row(const std::string& start) {
-    std::istringstream in(read_doc("scene-format.md"));
+// The line of docs/`page` that starts with `start` (the one table row).
+std::string table_row(const std::string& start, const std::string& page = "scene-format.md") {
+    std::istringstream in(read_doc(page));
     std::string found;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind(start, 0) != 0) continue;
         EXPECT_TRUE(found.empty()) << "two rows start with " << start;
         found = line;
     }
-    EXPECT_FALSE(found.empty()) << "no row of docs/scene-format.md starts with " << start;
+    EXPECT_FALSE(found.empty()) << "no row of docs/" << page << " starts with " << start;
     return found;
 }
 
@@ -244,6 +245,22 @@ std::vector<std::string> quoted_names(const std::string& whole_row, int column) 
         if (end == std::string::npos) break;
         names.push_back(row.substr(at + 2, end - at - 2));
         at = end + 2;
+    }
+    return names;
+}
+
+// The `code` names of a row of docs/user-guide.md's options table, before
+// the first ';' (after it come the scene keys the option replaces).
+std::vector<std::string> option_values(const std::string& option) {
+    const std::string row = table_row("| `" + option + "` |", "user-guide.md");
+    const std::size_t begin = row.find('|', 2) + 1;
+    const std::string values = row.substr(begin, row.find(';', begin) - begin);
+    std::vector<std::string> names;
+    for (std::size_t at = values.find('`'); at != std::string::npos; at = values.find('`', at)) {
+        const std::size_t end = values.find('`', at + 1);
+        if (end == std::string::npos) break;
+        names.push_back(values.substr(at + 1, end - at - 1));
+        at = end + 1;
     }
     return names;
 }
@@ -263,16 +280,19 @@ TEST(DocsTables, ReflectionModelsAreTheLibrarysList) {
         library.emplace_back(model.name);
     // [lighting]'s rows: key, type, allowed, meaning.
     EXPECT_EQ(quoted_names(table_row("| `reflection` | choice | `\""), 2), library);
+    EXPECT_EQ(option_values("--reflection M"), library);
 }
 
 TEST(DocsTables, ShadingModelsAreTheLibrarysList) {
     EXPECT_EQ(quoted_names(table_row("| `shading` | choice | `\""), 2),
               strings(litkit::shading_names));
+    EXPECT_EQ(option_values("--shading S"), strings(litkit::shading_names));
 }
 
 TEST(DocsTables, NormalsWeightingsAreTheLibrarysList) {
     EXPECT_EQ(quoted_names(table_row("| `normals` | choice, default"), 2),
               strings(litkit::normals_names));
+    EXPECT_EQ(option_values("--normals N"), strings(litkit::normals_names));
 }
 
 TEST(DocsTables, LightTypesAreTheLibrarysList) {
