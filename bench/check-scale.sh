@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# How `litkit check` grows with the number of lights and of objects (issue
-# 14 C9: duplicate light positions by hashing, object overlaps behind a
+# How `litkit check` grows with the number of lights and of objects
+# (duplicate light positions by hashing, object overlaps behind a
 # sort-and-sweep broad phase). Prints a Markdown table (docs/performance.md
 # keeps one). A measurement, not a test: nothing passes or fails on speed.
 # Usage: bench/check-scale.sh [BUILD_DIR]   (default: build)

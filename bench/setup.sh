@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Set-up time of the 261k-triangle sphere (meshes, normals, world space: the
 # `setup:` line of `litkit bench`), fresh processes, for each normals option,
-# interleaved between two litkit binaries (issues 12 and 16):
+# interleaved between two litkit binaries:
 #   bench/setup.sh OLD_LITKIT NEW_LITKIT [ROUNDS] [THREADS]
 # Prints per option the median over rounds for each binary, and what each
 # option adds to `mean` (the default). THREADS threads (1 unless given; the

@@ -430,21 +430,13 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
 }
 
 std::string_view to_string(Normals normals) {
-    switch (normals) {
-        case Normals::Mean: return "mean";
-        case Normals::Area: return "area";
-        case Normals::Angle: return "angle";
-        case Normals::Max: return "max";
-        case Normals::File: return "file";
-    }
-    return "mean";
+    const auto index = static_cast<std::size_t>(normals);
+    return index < normals_names.size() ? normals_names[index] : "?";
 }
 
 std::optional<Normals> parse_normals(std::string_view text) {
-    for (int i = 0; i < normals_count; ++i) {
-        const auto normals = static_cast<Normals>(i);
-        if (to_string(normals) == text) return normals;
-    }
+    for (std::size_t i = 0; i < normals_names.size(); ++i)
+        if (normals_names[i] == text) return static_cast<Normals>(i);
     return std::nullopt;
 }
 
