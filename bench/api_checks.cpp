@@ -27,19 +27,22 @@ litkit::Scene crowded(int lights, int objects) {
     scene.objects.clear();
     for (int i = 0; i < objects; ++i) {
         litkit::SceneObject object = cube;
-        object.position = {-40.0f + 2.0f * static_cast<float>(i % 40), -40.0f + 2.0f * static_cast<float>(i / 40), 0.0f};
+        object.position = {-40.0f + 2.0f * static_cast<float>(i % 40),
+                           -40.0f + 2.0f * static_cast<float>(i / 40), 0.0f};
         scene.objects.push_back(object);
     }
     return scene;
 }
 
 void BM_CheckRenderable(benchmark::State& state) {
-    const litkit::Scene scene = crowded(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    const litkit::Scene scene =
+        crowded(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
     for (auto _ : state) litkit::check_renderable(scene);
 }
 
 void BM_ValidateScene(benchmark::State& state) {
-    const litkit::Scene scene = crowded(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    const litkit::Scene scene =
+        crowded(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
     for (auto _ : state) benchmark::DoNotOptimize(litkit::validate_scene(scene));
 }
 

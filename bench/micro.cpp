@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "cpu/shade_kernel.hpp"
 #include "litkit/image.hpp"
 #include "litkit/lighting.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
-#include "cpu/shade_kernel.hpp"
 
 namespace {
 
@@ -26,7 +26,8 @@ struct Block {
     std::vector<litkit::equations::PreparedLight> lights;
     litkit::Material material;
     // Looking down −z with a 1024-pixel row spanning x ∈ [−1, 1] at z = 0.
-    litkit::kernels::RowRays rays{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, -1.0f}, {0.25f / 1024.0f, 0.0f, 0.0f}};
+    litkit::kernels::RowRays rays{
+        {0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, -1.0f}, {0.25f / 1024.0f, 0.0f, 0.0f}};
 
     explicit Block(std::size_t count) {
         for (std::size_t i = 0; i < count; ++i) {
@@ -52,9 +53,11 @@ struct Block {
 void shade_block(benchmark::State& state, const litkit::kernels::Kernels& kernels,
                  litkit::Reflection reflection) {
     Block block(1024);
-    const litkit::kernels::SurfaceRun surface{&block.rays, 1.0f - static_cast<float>(block.w.size()),
-                                              block.w.data(), block.nx.data(), block.ny.data(),
-                                              block.nz.data(), block.w.size()};
+    const litkit::kernels::SurfaceRun surface{
+        &block.rays,     1.0f - static_cast<float>(block.w.size()),
+        block.w.data(),  block.nx.data(),
+        block.ny.data(), block.nz.data(),
+        block.w.size()};
     for (auto _ : state) {
         kernels.shade_phong(reflection, block.lights, block.material, surface,
                             {block.r.data(), block.g.data(), block.b.data()});
@@ -118,7 +121,9 @@ void frame(benchmark::State& state, litkit::Shape shape, int width, int height,
     state.counters["pixels"] = static_cast<double>(renderer.shaded_pixel_count());
 }
 
-void BM_FrameCube640x480(benchmark::State& state) { frame(state, litkit::CubeShape{2.0f}, 640, 480); }
+void BM_FrameCube640x480(benchmark::State& state) {
+    frame(state, litkit::CubeShape{2.0f}, 640, 480);
+}
 void BM_FrameSphere65kTriangles640x480(benchmark::State& state) {
     frame(state, litkit::SphereShape{1.0f, 256, 128}, 640, 480);
 }
@@ -155,7 +160,8 @@ void BM_WorldMesh261kNormals(benchmark::State& state) {
     const litkit::NormalOptions options{
         static_cast<litkit::Normals>(state.range(0)),
         state.range(1) ? std::optional<float>(60.0f) : std::nullopt};
-    for (auto _ : state) benchmark::DoNotOptimize(litkit::world_mesh(object, options).normals.data());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(litkit::world_mesh(object, options).normals.data());
     state.SetLabel(std::string(litkit::to_string(options.normals)) +
                    (state.range(1) ? ", crease 60" : ""));
 }
@@ -167,7 +173,13 @@ BENCHMARK(BM_WorldMesh261kNormals)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageSetup261kTriangles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageRasterizeFlatFill1920x1080)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_EncodeDefaultScenePng)->Arg(0)->Arg(1)->Arg(3)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EncodeDefaultScenePng)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(3)
+    ->Arg(6)
+    ->Arg(9)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadeBlockAvx512Phong);
 BENCHMARK(BM_ShadeBlockAvx2Phong);
 BENCHMARK(BM_ShadeBlockPortablePhong);

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
         const litkit::Image a = litkit::read_png(argv[1]);
         const litkit::Image b = litkit::read_png(argv[2]);
         if (a.width != b.width || a.height != b.height) {
-            std::fprintf(stderr, "sizes differ: %dx%d and %dx%d\n", a.width, a.height, b.width, b.height);
+            std::fprintf(stderr, "sizes differ: %dx%d and %dx%d\n", a.width, a.height, b.width,
+                         b.height);
             return 1;
         }
         litkit::Image diff(a.width, a.height);
@@ -41,10 +42,11 @@ int main(int argc, char** argv) {
             const std::uint8_t v = d == 0 ? 0 : d <= 2 ? 96 : 255;
             diff.rgb[i * 3] = diff.rgb[i * 3 + 1] = diff.rgb[i * 3 + 2] = v;
         }
-        std::printf("pixels=%zu equal=%.5f within_2=%.5f over_2=%zu max_diff=%d at=(%zu,%zu) "
-                    "mean_abs_diff=%.4f\n",
-                    pixels, double(equal) / pixels, double(within) / pixels, pixels - within, largest,
-                    worst % a.width, worst / a.width, sum / (pixels * 3.0));
+        std::printf(
+            "pixels=%zu equal=%.5f within_2=%.5f over_2=%zu max_diff=%d at=(%zu,%zu) "
+            "mean_abs_diff=%.4f\n",
+            pixels, double(equal) / pixels, double(within) / pixels, pixels - within, largest,
+            worst % a.width, worst / a.width, sum / (pixels * 3.0));
         if (argc == 5) litkit::write_png(diff, argv[4]);
         return 0;
     } catch (const std::exception& error) {

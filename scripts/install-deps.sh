@@ -14,6 +14,8 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
+  # .ci/run checks the sources' layout against .clang-format (scripts/check-format.sh).
+  clang-format
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libtinyobjloader-dev
   # PNG's default level deflated by ISA-L (src/core/image.cpp; a shared
   # library: Debian has no archive of it).

@@ -40,10 +40,10 @@ struct Agreement {
     std::size_t counted = 0;  // interior pixels covered by an object
     std::size_t within = 0;   // of those, every channel within 2/255
     int worst = 0;
-    std::size_t background_counted = 0;  // pixels with only background around them
+    std::size_t background_counted = 0;    // pixels with only background around them
     std::size_t background_differing = 0;  // of those, not exactly equal
-    std::size_t pixels = 0;          // every pixel, edges included
-    std::size_t pixels_within = 0;   // of those, every channel within 2/255
+    std::size_t pixels = 0;                // every pixel, edges included
+    std::size_t pixels_within = 0;         // of those, every channel within 2/255
     double fraction() const { return counted ? double(within) / double(counted) : 0.0; }
     double fraction_of_all() const { return pixels ? double(pixels_within) / double(pixels) : 0.0; }
 };
@@ -52,7 +52,8 @@ struct Agreement {
 // one object; also counts the background pixels that differ at all (both
 // backends clear to the same colour exactly) and, for a coarse check that
 // includes edges, every pixel.
-inline Agreement agreement(const litkit::Image& a, const litkit::Image& b, const litkit::Image& label) {
+inline Agreement agreement(const litkit::Image& a, const litkit::Image& b,
+                           const litkit::Image& label) {
     Agreement result;
     auto label_at = [&](int x, int y) {
         const std::uint8_t* p = label.pixel(x, y);
@@ -61,7 +62,8 @@ inline Agreement agreement(const litkit::Image& a, const litkit::Image& b, const
     auto difference_at = [&](int x, int y) {
         int difference = 0;
         for (int c = 0; c < 3; ++c)
-            difference = std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+            difference =
+                std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
         return difference;
     };
     for (int y = 0; y < label.height; ++y) {
@@ -75,7 +77,8 @@ inline Agreement agreement(const litkit::Image& a, const litkit::Image& b, const
             const int centre = label_at(x, y);
             bool interior = true;
             for (int dy = -1; dy <= 1 && interior; ++dy)
-                for (int dx = -1; dx <= 1 && interior; ++dx) interior = label_at(x + dx, y + dy) == centre;
+                for (int dx = -1; dx <= 1 && interior; ++dx)
+                    interior = label_at(x + dx, y + dy) == centre;
             if (!interior) continue;
             const int difference = difference_at(x, y);
             if (centre == 0) {

@@ -185,8 +185,10 @@ TEST(MeshData, OpenGlDrawsItAsItDrawsTheFile) {
 TEST(MeshData, ExportedProgramEmbedsTheSameVerticesAsForTheFile) {
     const fs::path root = fs::temp_directory_path() / ("litkit-api-" + std::to_string(::getpid()));
     fs::remove_all(root);
-    litkit::export_cpp(scene_with(litkit::MeshDataShape(octahedron())), root / "memory", "demo", "s");
-    litkit::export_cpp(scene_with(litkit::MeshFileShape{octahedron_file}), root / "file", "demo", "s");
+    litkit::export_cpp(scene_with(litkit::MeshDataShape(octahedron())), root / "memory", "demo",
+                       "s");
+    litkit::export_cpp(scene_with(litkit::MeshFileShape{octahedron_file}), root / "file", "demo",
+                       "s");
     auto text = [](const fs::path& path) {
         std::ifstream in(path);
         return std::string(std::istreambuf_iterator<char>(in), {});
@@ -198,7 +200,8 @@ TEST(MeshData, ExportedProgramEmbedsTheSameVerticesAsForTheFile) {
     memory.replace(type, std::string("\"cube\": mesh data").size(), "\"cube\": mesh");
     const bool same = memory == text(root / "file/main.cpp");  // not printed: 40 kB
     EXPECT_TRUE(same);
-    EXPECT_FALSE(litkit::export_glsl(scene_with(litkit::MeshDataShape(octahedron())), root / "glsl").empty());
+    EXPECT_FALSE(litkit::export_glsl(scene_with(litkit::MeshDataShape(octahedron())), root / "glsl")
+                     .empty());
     fs::remove_all(root);
 }
 
@@ -274,7 +277,8 @@ TEST(MeshData, SceneFilesRefuseItAndMeshToObjWritesIt) {
                   std::string::npos);
     }
     // The way out the message names: the mesh as an OBJ file, read back.
-    const fs::path path = fs::temp_directory_path() / ("litkit-api-" + std::to_string(::getpid()) + ".obj");
+    const fs::path path =
+        fs::temp_directory_path() / ("litkit-api-" + std::to_string(::getpid()) + ".obj");
     std::ofstream(path) << litkit::mesh_to_obj(octahedron());
     const litkit::Mesh back = litkit::load_obj(path);
     fs::remove(path);
@@ -302,13 +306,15 @@ TEST(InsideOut, SignedVolumeAndClosedness) {
 }
 
 TEST(InsideOut, AnInsideOutObjFileLoadsWithAWarningThatSaysHowToFixIt) {
-    const std::string scene_text = "[room]\nwidth = 10\nheight = 10\ndepth = 10\n"
-                                   "[observer]\nposition = [0, 0, 4]\n"
-                                   "[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n"
-                                   "[[lights]]\ntype = \"point\"\nposition = [2, 2, 3]\n"
-                                   "[[objects]]\ntype = \"mesh\"\nfile = \"";
+    const std::string scene_text =
+        "[room]\nwidth = 10\nheight = 10\ndepth = 10\n"
+        "[observer]\nposition = [0, 0, 4]\n"
+        "[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n"
+        "[[lights]]\ntype = \"point\"\nposition = [2, 2, 3]\n"
+        "[[objects]]\ntype = \"mesh\"\nfile = \"";
     const fs::path data = fs::path(LITKIT_TEST_DATA) / "obj";
-    const litkit::Scene bad = litkit::parse_scene(scene_text + "inside_out.obj\"\n", data / "s.toml");
+    const litkit::Scene bad =
+        litkit::parse_scene(scene_text + "inside_out.obj\"\n", data / "s.toml");
     ASSERT_TRUE(has_warning(bad, "inside out")) << "no warning";
     for (const litkit::Diagnostic& w : bad.warnings) {
         if (w.message.find("inside out") == std::string::npos) continue;
@@ -322,7 +328,8 @@ TEST(InsideOut, AnInsideOutObjFileLoadsWithAWarningThatSaysHowToFixIt) {
 }
 
 TEST(InsideOut, TheCommandLineRendersItAndPrintsTheWarning) {
-    const fs::path folder = fs::temp_directory_path() / ("litkit-inside-" + std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("litkit-inside-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::ofstream(folder / "s.toml")
         << "[room]\nwidth = 10\nheight = 10\ndepth = 10\n[observer]\nposition = [0, 0, 4]\n"
@@ -330,11 +337,12 @@ TEST(InsideOut, TheCommandLineRendersItAndPrintsTheWarning) {
            "[[lights]]\ntype = \"point\"\nposition = [2, 2, 3]\n"
            "[[objects]]\ntype = \"mesh\"\nfile = \""
         << inside_out_file.string() << "\"\n";
-    const auto run = litkit_test::run_command(std::string(LITKIT_CLI) + " render " +
-                                              (folder / "s.toml").string() + " -o " +
-                                              (folder / "s.png").string() + " --width 40 --height 30");
+    const auto run = litkit_test::run_command(
+        std::string(LITKIT_CLI) + " render " + (folder / "s.toml").string() + " -o " +
+        (folder / "s.png").string() + " --width 40 --height 30");
     EXPECT_EQ(run.status, 0) << run.output;
-    EXPECT_NE(run.output.find("s.toml:15:8: warning: objects[0]: mesh file 'inside_out.obj' is inside out"),
+    EXPECT_NE(run.output.find(
+                  "s.toml:15:8: warning: objects[0]: mesh file 'inside_out.obj' is inside out"),
               std::string::npos)
         << run.output;
     EXPECT_TRUE(fs::exists(folder / "s.png"));
@@ -362,7 +370,8 @@ litkit::Rgb8 byte_triple(int b) {
 }
 
 std::string toml_triple(const litkit::Rgb8& c) {
-    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + "]";
+    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+           "]";
 }
 
 }  // namespace
@@ -398,7 +407,8 @@ TEST(Colours, EveryBackgroundByteIsDrawnAndWrittenBackAsGiven) {
             ASSERT_TRUE(image.rgb[i] == bytes[0] && image.rgb[i + 1] == bytes[1] &&
                         image.rgb[i + 2] == bytes[2])
                 << "background " << toml_triple(bytes);
-        EXPECT_NE(litkit::scene_to_toml(scene).find(key + toml_triple(bytes) + "\n"), std::string::npos);
+        EXPECT_NE(litkit::scene_to_toml(scene).find(key + toml_triple(bytes) + "\n"),
+                  std::string::npos);
     }
 }
 
@@ -435,7 +445,8 @@ TEST(Colours, ABackgroundOutside0To1IsRefused) {
 TEST(Colours, TheExportedProgramClearsToTheSameBytes) {
     litkit::Scene scene = litkit::default_scene();
     scene.output.background = litkit::from_rgb8({1, 128, 255});
-    const fs::path root = fs::temp_directory_path() / ("litkit-colour-" + std::to_string(::getpid()));
+    const fs::path root =
+        fs::temp_directory_path() / ("litkit-colour-" + std::to_string(::getpid()));
     fs::remove_all(root);
     litkit::export_cpp(scene, root, "demo", "s");
     std::ifstream in(root / "main.cpp");
@@ -455,7 +466,10 @@ TEST(Preconditions, AnyExtremeValueRendersOrThrowsALitkitErrorNeverCrashes) {
         {"room.width", [](litkit::Scene& s, float v) { s.room.width = v; }},
         {"observer.position.x", [](litkit::Scene& s, float v) { s.observer.position.x = v; }},
         {"observer.look_at.y", [](litkit::Scene& s, float v) { s.observer.look_at.y = v; }},
-        {"observer.up.z", [](litkit::Scene& s, float v) { s.observer.up = {0.0f, v, 0.0f}; }},
+        {"observer.up.z",
+         [](litkit::Scene& s, float v) {
+             s.observer.up = {0.0f, v, 0.0f};
+         }},
         {"observer.fov", [](litkit::Scene& s, float v) { s.observer.fov_degrees = v; }},
         {"observer.near", [](litkit::Scene& s, float v) { s.observer.near = v; }},
         {"observer.far", [](litkit::Scene& s, float v) { s.observer.far = v; }},
@@ -463,30 +477,37 @@ TEST(Preconditions, AnyExtremeValueRendersOrThrowsALitkitErrorNeverCrashes) {
         {"output.background", [](litkit::Scene& s, float v) { s.output.background.y = v; }},
         {"light.intensity", [](litkit::Scene& s, float v) { s.lights[0].light.intensity = v; }},
         {"light.color", [](litkit::Scene& s, float v) { s.lights[0].light.color.x = v; }},
-        {"light.position", [](litkit::Scene& s, float v) {
+        {"light.position",
+         [](litkit::Scene& s, float v) {
              s.lights[0].light.kind = litkit::PointLight{.position = {v, 0.0f, 0.0f}};
          }},
-        {"light.attenuation", [](litkit::Scene& s, float v) {
+        {"light.attenuation",
+         [](litkit::Scene& s, float v) {
              s.lights[0].light.kind = litkit::PointLight{.attenuation = {0.0f, 0.0f, v}};
          }},
-        {"spot.cutoff", [](litkit::Scene& s, float v) {
+        {"spot.cutoff",
+         [](litkit::Scene& s, float v) {
              s.lights[0].light.kind = litkit::SpotLight{.cutoff_degrees = v};
          }},
-        {"directional", [](litkit::Scene& s, float v) {
+        {"directional",
+         [](litkit::Scene& s, float v) {
              s.lights[0].light.kind = litkit::DirectionalLight{{v, v, v}};
          }},
         {"object.scale", [](litkit::Scene& s, float v) { s.objects[0].scale = v; }},
         {"object.position", [](litkit::Scene& s, float v) { s.objects[0].position.z = v; }},
         {"object.rotation", [](litkit::Scene& s, float v) { s.objects[0].rotation_degrees.y = v; }},
         {"material.color", [](litkit::Scene& s, float v) { s.objects[0].material.color.z = v; }},
-        {"material.shininess", [](litkit::Scene& s, float v) { s.objects[0].material.shininess = v; }},
+        {"material.shininess",
+         [](litkit::Scene& s, float v) { s.objects[0].material.shininess = v; }},
         {"material.sigma", [](litkit::Scene& s, float v) { s.objects[0].material.sigma = v; }},
         {"cube.size", [](litkit::Scene& s, float v) { s.objects[0].shape = litkit::CubeShape{v}; }},
-        {"sphere.radius", [](litkit::Scene& s, float v) {
+        {"sphere.radius",
+         [](litkit::Scene& s, float v) {
              s.objects[0].shape = litkit::SphereShape{.radius = v, .segments = 8, .rings = 4};
          }},
         {"crease", [](litkit::Scene& s, float v) { s.objects[0].crease_angle_degrees = v; }},
-        {"mesh data", [](litkit::Scene& s, float v) {
+        {"mesh data",
+         [](litkit::Scene& s, float v) {
              litkit::Mesh mesh = octahedron();
              mesh.positions[1].x = v;
              s.objects[0].shape = litkit::MeshDataShape(std::move(mesh));

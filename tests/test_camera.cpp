@@ -62,8 +62,7 @@ TEST(Camera, TheCentrePixelOfAnOddImageLooksStraightAhead) {
     ASSERT_EQ(c.width % 2, 1);
     ASSERT_EQ(c.height % 2, 1);
     const litkit::Camera camera = litkit::make_camera(c.observer, c.width, c.height);
-    const glm::vec3 d =
-        litkit::ray_direction(camera.row_rays(c.height / 2), c.width, c.width / 2);
+    const glm::vec3 d = litkit::ray_direction(camera.row_rays(c.height / 2), c.width, c.width / 2);
     EXPECT_EQ(d, camera.forward);  // k = 0 and y = 0: exactly f
 }
 

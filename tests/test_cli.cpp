@@ -40,7 +40,7 @@ CliRun run_cli_as_nobody(const std::string& arguments, const fs::path& directory
 }
 
 class Cli : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir = fs::temp_directory_path() /
               ("litkit-cli-" + std::to_string(::getpid()) + "-" +
@@ -49,9 +49,7 @@ protected:
         fs::create_directories(dir);
     }
     void TearDown() override { fs::remove_all(dir); }
-    void write(const fs::path& name, const std::string& text) {
-        std::ofstream(dir / name) << text;
-    }
+    void write(const fs::path& name, const std::string& text) { std::ofstream(dir / name) << text; }
     std::string read(const fs::path& name) {
         std::ifstream in(dir / name, std::ios::binary);
         return {std::istreambuf_iterator<char>(in), {}};
@@ -100,8 +98,8 @@ TEST_F(Cli, HelpListsTheCommands) {
 TEST_F(Cli, RenderHelpListsItsOptions) {
     CliRun run = run_cli("render --help", dir);
     EXPECT_EQ(run.status, 0);
-    for (const char* option : {"--output", "--width", "--height", "--reflection", "--shading",
-                               "--threads", "--yes"})
+    for (const char* option :
+         {"--output", "--width", "--height", "--reflection", "--shading", "--threads", "--yes"})
         EXPECT_NE(run.output.find(option), std::string::npos) << option;
 }
 
@@ -114,8 +112,8 @@ TEST_F(Cli, AloneItPrintsTheCommandsAndExits2) {
     CliRun run = run_cli("", dir);
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.output.find("usage: litkit COMMAND"), std::string::npos) << run.output;
-    for (const char* command : {"render", "check", "init", "export", "compare", "explain",
-                                "turntable", "bench"})
+    for (const char* command :
+         {"render", "check", "init", "export", "compare", "explain", "turntable", "bench"})
         EXPECT_NE(run.output.find("  " + std::string(command) + " "), std::string::npos) << command;
 }
 
@@ -133,18 +131,21 @@ TEST_F(Cli, MisspeltCommandGetsASuggestion) {
 TEST_F(Cli, MisspeltOptionGetsASuggestion) {
     CliRun run = run_cli("render --widht 64", dir);
     EXPECT_EQ(run.status, 2);
-    EXPECT_NE(run.output.find("unknown option '--widht'; did you mean '--width'?"), std::string::npos)
+    EXPECT_NE(run.output.find("unknown option '--widht'; did you mean '--width'?"),
+              std::string::npos)
         << run.output;
     EXPECT_FALSE(fs::exists(dir / "default.png"));
     CliRun compare = run_cli("compare --no-label", dir);
     EXPECT_EQ(compare.status, 2);
-    EXPECT_NE(compare.output.find("did you mean '--no-labels'?"), std::string::npos) << compare.output;
+    EXPECT_NE(compare.output.find("did you mean '--no-labels'?"), std::string::npos)
+        << compare.output;
 }
 
 TEST_F(Cli, ThreadsWithTheOpenGlBackendIsRefusedNotIgnored) {
     CliRun run = run_cli("render --backend gl --threads 2", dir);
     EXPECT_EQ(run.status, 2);
-    EXPECT_NE(run.output.find("--threads applies to the CPU backend"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("--threads applies to the CPU backend"), std::string::npos)
+        << run.output;
     EXPECT_FALSE(fs::exists(dir / "default.png"));
 }
 
@@ -168,8 +169,10 @@ TEST_F(Cli, BackendOptionOffersEveryBackendOfTheLibrarysList) {
     CliRun help = run_cli("render --help", dir);
     EXPECT_EQ(help.status, 0);
     for (const litkit::BackendInfo& backend : litkit::backends()) {
-        const std::string described = std::string(backend.name) + ": " + std::string(backend.summary);
-        EXPECT_NE(help.output.find(described), std::string::npos) << described << "\n" << help.output;
+        const std::string described =
+            std::string(backend.name) + ": " + std::string(backend.summary);
+        EXPECT_NE(help.output.find(described), std::string::npos) << described << "\n"
+                                                                  << help.output;
     }
     EXPECT_EQ(run_cli("render --backend vulkan", dir).status, 2);
     EXPECT_FALSE(fs::exists(dir / "default.png"));
@@ -482,9 +485,10 @@ TEST_F(Cli, FileNormalsOnAMeshWithoutThemIsInvalidInputAtTheMeshLine) {
     write("scene.toml", cube_and_mesh_scene);
     write("square.obj", square_missing_a_normal);
     for (const char* backend : {"cpu", "gl"}) {
-        const CliRun run = run_cli(std::string("render scene.toml --yes --normals file --backend ") +
-                                       backend + " -o out.png",
-                                   dir);
+        const CliRun run =
+            run_cli(std::string("render scene.toml --yes --normals file --backend ") + backend +
+                        " -o out.png",
+                    dir);
         if (run.output.find("OpenGL is not available") != std::string::npos) continue;
         EXPECT_EQ(run.status, 2) << run.output;
         EXPECT_NE(run.output.find("square.obj:7: error: "), std::string::npos) << run.output;

@@ -100,6 +100,4 @@ TEST(HullContains, PointOnTheBoundaryCountsAsInside) {
     EXPECT_TRUE(litkit::hull_contains(box({0, 0, 0}, 1), {1, 1, 1}));         // a corner
 }
 
-TEST(HullContains, EmptyHullContainsNothing) {
-    EXPECT_FALSE(litkit::hull_contains({}, {0, 0, 0}));
-}
+TEST(HullContains, EmptyHullContainsNothing) { EXPECT_FALSE(litkit::hull_contains({}, {0, 0, 0})); }

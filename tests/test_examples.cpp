@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <span>
 #include <ostream>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,7 +115,8 @@ TEST_P(ExampleScene, LoadsRendersAndCoversAVisiblePartOfThePicture) {
     ASSERT_EQ(image.width, test_width);
     ASSERT_EQ(image.height, test_height);
 
-    const std::size_t covered = pixels_unlike_background(image, litkit::to_rgb8(scene.output.background));
+    const std::size_t covered =
+        pixels_unlike_background(image, litkit::to_rgb8(scene.output.background));
     const std::size_t total = static_cast<std::size_t>(test_width) * test_height;
     EXPECT_GE(static_cast<double>(covered), minimum_covered_fraction * static_cast<double>(total))
         << covered << " of " << total << " pixels differ from the background";

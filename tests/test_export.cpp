@@ -204,10 +204,11 @@ material = { color = [220, 90, 70], ka = 0 }
 )toml";
 
 class Export : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        dir = fs::temp_directory_path() / ("litkit-export-" + std::to_string(::getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() /
+              ("litkit-export-" + std::to_string(::getpid()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
         std::ofstream(dir / "mixed.toml") << mixed_scene;
@@ -235,7 +236,8 @@ protected:
                                       " '-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic'");
         ASSERT_EQ(configure.status, 0) << configure.output;
         configure_output = configure.output;
-        const Outcome build = run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
+        const Outcome build =
+            run("'" LITKIT_CMAKE "' --build " + quoted(dir / "program" / "build"));
         ASSERT_EQ(build.status, 0) << build.output;
         EXPECT_EQ(build.output.find("warning"), std::string::npos) << build.output;
 
@@ -271,7 +273,8 @@ TEST_F(Export, GlslWritesOneProgramPerModelPairAndEachCompiles) {
     const std::vector<std::string> stems = {"blinn-phong-phong", "half-lambert-flat",
                                             "phong-gouraud", "phong-faceted"};
     std::size_t files = 0;
-    for (const auto& entry : fs::directory_iterator(dir / "shaders")) files += entry.is_regular_file();
+    for (const auto& entry : fs::directory_iterator(dir / "shaders"))
+        files += entry.is_regular_file();
     EXPECT_EQ(files, 2 * stems.size());
     for (const std::string& stem : stems) {
         const fs::path vert = dir / "shaders" / (stem + ".vert");
@@ -336,7 +339,8 @@ TEST_F(Export, RefusesToReplaceFilesWithoutForce) {
     std::ofstream(dir / "program" / "main.cpp") << "// the user's own\n";
     const Outcome refused = cli("export --format cpp mixed.toml -o program");
     EXPECT_EQ(refused.status, 2) << refused.output;
-    EXPECT_NE(refused.output.find("already exists; pass --force"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("already exists; pass --force"), std::string::npos)
+        << refused.output;
     EXPECT_EQ(read_text(dir / "program" / "main.cpp"), "// the user's own\n");
     EXPECT_FALSE(fs::exists(dir / "program" / "CMakeLists.txt"));  // nothing half-written
 
@@ -361,14 +365,16 @@ TEST_F(Export, RejectsAProgramNameCMakeKeepsForItself) {
 TEST_F(Export, PrintsBuildCommandsThatSurviveSpacesInPaths) {
     const Outcome exported = cli("export --format cpp mixed.toml -o 'my program'");
     ASSERT_EQ(exported.status, 0) << exported.output;
-    EXPECT_NE(exported.output.find("cmake -S 'my program' -B 'my program/build'"), std::string::npos)
+    EXPECT_NE(exported.output.find("cmake -S 'my program' -B 'my program/build'"),
+              std::string::npos)
         << exported.output;
 }
 
 TEST_F(Export, GlslOfASceneWithoutObjectsIsTheScenesOwnPair) {
-    std::ofstream(dir / "empty.toml") << "[room]\nwidth = 4\nheight = 4\ndepth = 4\n"
-                                         "[observer]\nposition = [0, 0, 1]\n"
-                                         "[lighting]\nreflection = \"lambert\"\nshading = \"gouraud\"\n";
+    std::ofstream(dir / "empty.toml")
+        << "[room]\nwidth = 4\nheight = 4\ndepth = 4\n"
+           "[observer]\nposition = [0, 0, 1]\n"
+           "[lighting]\nreflection = \"lambert\"\nshading = \"gouraud\"\n";
     const Outcome exported = cli("export --format glsl empty.toml -o shaders");
     ASSERT_EQ(exported.status, 0) << exported.output;
     EXPECT_TRUE(fs::exists(dir / "shaders" / "lambert-gouraud.vert")) << exported.output;
@@ -402,8 +408,8 @@ TEST_F(Export, GlBackendRendersThroughTheCli) {
 TEST_F(Export, GlBackendWithoutOpenGlSaysWhyAndSuggestsTheCpu) {
     // glvnd told to use no EGL vendor at all: as on a machine without a driver.
     const Outcome failed = run("cd " + quoted(dir) +
-                           " && __EGL_VENDOR_LIBRARY_FILENAMES=/dev/null '" LITKIT_CLI
-                           "' render --backend gl -o none.png");
+                               " && __EGL_VENDOR_LIBRARY_FILENAMES=/dev/null '" LITKIT_CLI
+                               "' render --backend gl -o none.png");
     EXPECT_EQ(failed.status, 1) << failed.output;
     EXPECT_NE(failed.output.find("OpenGL is not available"), std::string::npos) << failed.output;
     EXPECT_NE(failed.output.find("--backend cpu"), std::string::npos) << failed.output;
@@ -420,6 +426,7 @@ TEST_F(Export, ShadersInTheDocsAreCurrent) {
     for (const char* name : {"phong-phong.vert", "phong-phong.frag"}) {
         ASSERT_TRUE(fs::exists(docs / name)) << docs / name;
         EXPECT_EQ(read_text(docs / name), read_text(dir / "shaders" / name))
-            << name << " is out of date: ./build/litkit export --format glsl -o docs/shaders --force";
+            << name
+            << " is out of date: ./build/litkit export --format glsl -o docs/shaders --force";
     }
 }

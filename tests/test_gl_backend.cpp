@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -88,13 +88,13 @@ litkit::Scene matrix_scene(Shape shape, LightType light_type, litkit::Reflection
             break;
         case LightType::Spot:
             // Aimed off-centre with a narrow cone, so the cone's edge crosses the object.
-            light.kind = litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
-                                           20.0f, 2.0f};
+            light.kind = litkit::SpotLight{
+                {0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f}, 20.0f, 2.0f};
             break;
         case LightType::SoftSpot:
             // The same cone with a soft edge over its outer half (docs/spec.md §9.3).
-            light.kind = litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
-                                           20.0f, 2.0f, 0.5f};
+            light.kind = litkit::SpotLight{
+                {0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f}, 20.0f, 2.0f, 0.5f};
             break;
     }
     light.color = glm::vec3(255.0f, 240.0f, 220.0f) / 255.0f;
@@ -127,8 +127,17 @@ TEST(GlBackend, ReadBackAtEverySizeKeepsEveryRowAndPixelInPlace) {
     // converts eight pixels at a time where the CPU has AVX2, the rest one
     // by one: widths around and between those multiples, and heights of one
     // band (1920 wide: 34 rows), several, and a part of one.
-    for (const auto& [width, height] : std::vector<std::pair<int, int>>{
-             {1, 5}, {7, 3}, {8, 4}, {9, 9}, {15, 2}, {16, 7}, {17, 11}, {37, 23}, {161, 40}, {1920, 34}, {1920, 101}}) {
+    for (const auto& [width, height] : std::vector<std::pair<int, int>>{{1, 5},
+                                                                        {7, 3},
+                                                                        {8, 4},
+                                                                        {9, 9},
+                                                                        {15, 2},
+                                                                        {16, 7},
+                                                                        {17, 11},
+                                                                        {37, 23},
+                                                                        {161, 40},
+                                                                        {1920, 34},
+                                                                        {1920, 101}}) {
         litkit::Scene scene = litkit::default_scene();
         scene.output.width = width;
         scene.output.height = height;
@@ -140,10 +149,10 @@ TEST(GlBackend, ReadBackAtEverySizeKeepsEveryRowAndPixelInPlace) {
 }
 
 TEST(GlBackend, SeveralRenderersInOneProcessEachDrawTheirOwnScene) {
-    const litkit::Scene sphere_scene = matrix_scene(Shape::Sphere, LightType::Point,
-                                                    litkit::Reflection::Phong, litkit::Shading::Phong);
-    const litkit::Scene cube_scene = matrix_scene(Shape::Cube, LightType::Spot,
-                                                  litkit::Reflection::Lambert, litkit::Shading::Flat);
+    const litkit::Scene sphere_scene = matrix_scene(
+        Shape::Sphere, LightType::Point, litkit::Reflection::Phong, litkit::Shading::Phong);
+    const litkit::Scene cube_scene = matrix_scene(
+        Shape::Cube, LightType::Spot, litkit::Reflection::Lambert, litkit::Shading::Flat);
     litkit::Image sphere_alone, cube_alone;
     {
         litkit::GlRenderer gl(sphere_scene);
@@ -197,13 +206,14 @@ TEST(GlBackend, MoreLightsThanAShaderHoldsIsAClearError) {
 
 TEST(GlBackend, ManyLights) {
     // 40 point lights around the sphere: one program sized for all of them.
-    litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Ambient, litkit::Reflection::BlinnPhong,
-                                       litkit::Shading::Phong);
+    litkit::Scene scene = matrix_scene(Shape::Sphere, LightType::Ambient,
+                                       litkit::Reflection::BlinnPhong, litkit::Shading::Phong);
     for (int i = 0; i < 40; ++i) {
         const float angle = 0.157f * static_cast<float>(i);
-        litkit::Light light{litkit::PointLight{{3.0f * std::cos(angle), 1.5f, 3.0f * std::sin(angle)},
-                                               {1.0f, 0.0f, 0.0f}},
-                            glm::vec3(1.0f), 0.03f};
+        litkit::Light light{
+            litkit::PointLight{{3.0f * std::cos(angle), 1.5f, 3.0f * std::sin(angle)},
+                               {1.0f, 0.0f, 0.0f}},
+            glm::vec3(1.0f), 0.03f};
         scene.lights.push_back({"ring", light});
     }
     const Comparison c = compare_backends(scene);
@@ -226,7 +236,8 @@ TEST(GlBackend, MatchesCpuForEveryModelAndLightOnSphereAndCube) {
         for (litkit::Reflection reflection : reflections) {
             for (litkit::Shading shading : shadings) {
                 for (LightType light : lights) {
-                    const Comparison c = compare_backends(matrix_scene(shape, light, reflection, shading));
+                    const Comparison c =
+                        compare_backends(matrix_scene(shape, light, reflection, shading));
                     SCOPED_TRACE(std::string(shape == Shape::Sphere ? "sphere " : "cube ") +
                                  std::string(litkit::to_string(reflection)) + " " +
                                  std::string(litkit::to_string(shading)) + " light " +
@@ -253,7 +264,8 @@ TEST(GlBackend, MatchesCpuOnEveryExample) {
     for (const auto& entry : fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples"))
         if (entry.path().extension() == ".toml") scenes.push_back({entry.path()});
     std::vector<fs::path> multi;
-    for (const auto& entry : fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples" / "multi-file"))
+    for (const auto& entry :
+         fs::directory_iterator(fs::path(LITKIT_SOURCE_DIR) / "examples" / "multi-file"))
         if (entry.path().extension() == ".toml") multi.push_back(entry.path());
     std::sort(multi.begin(), multi.end());
     scenes.push_back(multi);
@@ -265,7 +277,8 @@ TEST(GlBackend, MatchesCpuOnEveryExample) {
         if (!scene.shading) scene.shading = litkit::default_shading;
         const Comparison c = compare_backends(scene);
         EXPECT_GT(c.agreement.counted, c.pixels / 50);
-        EXPECT_GE(c.agreement.fraction(), required_fraction) << "worst " << c.agreement.worst << "/255";
+        EXPECT_GE(c.agreement.fraction(), required_fraction)
+            << "worst " << c.agreement.worst << "/255";
         expect_edges_and_background_agree(c.agreement);
         std::cout << files.front().filename().string() << ": " << c.agreement.counted
                   << " interior pixels, fraction within 2/255 " << c.agreement.fraction()
@@ -320,8 +333,8 @@ TEST(GlBackend, WeightedAndCreasedNormalsMatchCpu) {
     // creased at 60° (flat faces) under Phong and Gouraud shading, and a
     // sphere with angle-weighted normals.
     for (const litkit::Shading shading : {litkit::Shading::Phong, litkit::Shading::Gouraud}) {
-        litkit::Scene scene = matrix_scene(Shape::Cube, LightType::Point,
-                                           litkit::Reflection::BlinnPhong, shading);
+        litkit::Scene scene =
+            matrix_scene(Shape::Cube, LightType::Point, litkit::Reflection::BlinnPhong, shading);
         scene.objects[0].position = {-1.1f, 0.0f, 0.0f};
         scene.objects[0].scale = 0.8f;
         scene.objects[0].crease_angle_degrees = 60.0f;
@@ -350,9 +363,10 @@ TEST(GlBackend, MatchesCpuOnAScaledScene) {
             "\n[observer]\nposition = [3.5" + s + ", 1" + s + ", 4" + s + "]\nlook_at = [-2" + s +
             ", -3" + s + ", -2" + s + "]\nnear = 0.05" + s + "\nfar = 1000" + s +
             "\n[lighting]\nreflection = \"phong\"\nshading = \"phong\"\n[output]\nwidth = 160\n"
-            "height = 120\n[[lights]]\ntype = \"point\"\nposition = [0, 0, 0]\nattenuation = [1, 0, "
-            "0]\n[[objects]]\ntype = \"cube\"\nsize = 2" + s + "\nposition = [-2" + s + ", -3" + s +
-            ", -2" + s + "]\nrotation = [0, 30, 0]\n";
+            "height = 120\n[[lights]]\ntype = \"point\"\nposition = [0, 0, 0]\nattenuation = [1, "
+            "0, "
+            "0]\n[[objects]]\ntype = \"cube\"\nsize = 2" +
+            s + "\nposition = [-2" + s + ", -3" + s + ", -2" + s + "]\nrotation = [0, 30, 0]\n";
         const litkit::Scene scene = litkit::parse_scene(text, "scaled.toml");
         const Comparison c = compare_backends(scene);
         EXPECT_GT(c.agreement.counted, c.pixels / 20) << scale;  // the cube is drawn

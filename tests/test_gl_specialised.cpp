@@ -28,15 +28,18 @@ using litkit::Shading;
 // One light of each kind: spot, ambient, directional, point (not in the
 // order of the kinds' numbers, so that order mix-ups show).
 std::vector<litkit::Light> four_kinds() {
-    litkit::Light spot{litkit::SpotLight{{0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f},
-                                         25.0f, 2.0f, 0.3f}};
+    litkit::Light spot{litkit::SpotLight{
+        {0.5f, 2.5f, 2.0f}, {1.0f, 0.0f, 0.02f}, {-0.3f, -1.0f, -0.9f}, 25.0f, 2.0f, 0.3f}};
     litkit::Light ambient{litkit::AmbientLight{}, glm::vec3(1.0f), 0.25f};
-    litkit::Light directional{litkit::DirectionalLight{{1.0f, -1.0f, -0.5f}}, glm::vec3(0.6f, 0.7f, 1.0f), 0.5f};
-    litkit::Light point{litkit::PointLight{{-1.5f, 1.0f, 2.0f}, {1.0f, 0.0f, 0.05f}}, glm::vec3(1.0f, 0.9f, 0.8f)};
+    litkit::Light directional{litkit::DirectionalLight{{1.0f, -1.0f, -0.5f}},
+                              glm::vec3(0.6f, 0.7f, 1.0f), 0.5f};
+    litkit::Light point{litkit::PointLight{{-1.5f, 1.0f, 2.0f}, {1.0f, 0.0f, 0.05f}},
+                        glm::vec3(1.0f, 0.9f, 0.8f)};
     return {spot, ambient, directional, point};
 }
 
-litkit::Scene scene_with(const std::vector<litkit::Light>& lights, Reflection reflection, Shading shading) {
+litkit::Scene scene_with(const std::vector<litkit::Light>& lights, Reflection reflection,
+                         Shading shading) {
     litkit::Scene scene;
     scene.output.width = 160;
     scene.output.height = 120;
@@ -58,7 +61,8 @@ litkit::Scene scene_with(const std::vector<litkit::Light>& lights, Reflection re
     return scene;
 }
 
-void expect_matches_cpu(const litkit::Image& gl, const litkit::Scene& scene, const std::string& what) {
+void expect_matches_cpu(const litkit::Image& gl, const litkit::Scene& scene,
+                        const std::string& what) {
     const litkit::Image cpu = litkit::render(scene);
     const litkit_test::Agreement a = litkit_test::agreement(gl, cpu, litkit_test::labels(scene));
     EXPECT_GT(a.counted, 1000u) << what;
@@ -70,20 +74,24 @@ void expect_matches_cpu(const litkit::Image& gl, const litkit::Scene& scene, con
 TEST(GlslSpecialised, OneBlockPerLightInTheScenesOrderAndNoLoop) {
     const std::vector<litkit::Light> lights = four_kinds();
     for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
-        const litkit::glsl::Shaders shaders = litkit::glsl::generate(Reflection::Phong, shading, lights, 1.0f);
-        const std::string& lit =
-            shading == Shading::Phong || shading == Shading::Faceted ? shaders.fragment : shaders.vertex;
+        const litkit::glsl::Shaders shaders =
+            litkit::glsl::generate(Reflection::Phong, shading, lights, 1.0f);
+        const std::string& lit = shading == Shading::Phong || shading == Shading::Faceted
+                                     ? shaders.fragment
+                                     : shaders.vertex;
         EXPECT_EQ(lit.find("for (int i = 0; i < u_light_count"), std::string::npos) << lit;
         EXPECT_EQ(lit.find("u_lights[i]."), std::string::npos);
         std::size_t at = 0;
-        const char* const blocks[] = {"// light 0: spot", "// light 1: ambient", "// light 2: directional",
-                                      "// light 3: point"};
+        const char* const blocks[] = {"// light 0: spot", "// light 1: ambient",
+                                      "// light 2: directional", "// light 3: point"};
         for (const char* block : blocks) {
             const std::size_t found = lit.find(block, at);
-            ASSERT_NE(found, std::string::npos) << block << " (after offset " << at << ") in\n" << lit;
+            ASSERT_NE(found, std::string::npos) << block << " (after offset " << at << ") in\n"
+                                                << lit;
             at = found;
         }
-        EXPECT_NE(lit.find("spot_factor(incidence.to_light, u_lights[0].direction"), std::string::npos);
+        EXPECT_NE(lit.find("spot_factor(incidence.to_light, u_lights[0].direction"),
+                  std::string::npos);
         EXPECT_NE(lit.find("ambient_term(u_lights[1].radiance, u_material)"), std::string::npos);
         EXPECT_NE(lit.find("directional_incidence(u_lights[2].direction)"), std::string::npos);
         EXPECT_NE(lit.find("point_incidence(u_lights[3].position, u_lights[3].attenuation, p)"),
@@ -91,30 +99,35 @@ TEST(GlslSpecialised, OneBlockPerLightInTheScenesOrderAndNoLoop) {
         EXPECT_NE(lit.find("const int MAX_LIGHTS = 4;"), std::string::npos);
     }
     // The general program keeps its loop.
-    EXPECT_NE(litkit::glsl::generate(Reflection::Phong, Shading::Phong, 4).fragment.find(
-                  "for (int i = 0; i < u_light_count"),
+    EXPECT_NE(litkit::glsl::generate(Reflection::Phong, Shading::Phong, 4)
+                  .fragment.find("for (int i = 0; i < u_light_count"),
               std::string::npos);
 }
 
 TEST(GlslSpecialised, GammaOneLeavesThePowerOut) {
     const std::vector<litkit::Light> lights = four_kinds();
     const std::string power = "c = pow(c, vec3(u_inv_gamma));";
-    EXPECT_EQ(litkit::glsl::generate(Reflection::Lambert, Shading::Phong, lights, 1.0f).fragment.find(power),
+    EXPECT_EQ(litkit::glsl::generate(Reflection::Lambert, Shading::Phong, lights, 1.0f)
+                  .fragment.find(power),
               std::string::npos);
-    EXPECT_NE(litkit::glsl::generate(Reflection::Lambert, Shading::Phong, lights, 2.2f).fragment.find(power),
+    EXPECT_NE(litkit::glsl::generate(Reflection::Lambert, Shading::Phong, lights, 2.2f)
+                  .fragment.find(power),
               std::string::npos);
     EXPECT_NE(litkit::glsl::generate(Reflection::Lambert, Shading::Phong, 4).fragment.find(power),
               std::string::npos);
 }
 
 TEST(GlslSpecialised, NoLightsIsAProgramToo) {
-    const litkit::glsl::Shaders shaders = litkit::glsl::generate(Reflection::Phong, Shading::Phong, {}, 1.0f);
+    const litkit::glsl::Shaders shaders =
+        litkit::glsl::generate(Reflection::Phong, Shading::Phong, {}, 1.0f);
     EXPECT_NE(shaders.fragment.find("const int MAX_LIGHTS = 1;"), std::string::npos);
-    EXPECT_NE(shaders.fragment.find("vec3 total = vec3(0.0);\n    return total;"), std::string::npos);
+    EXPECT_NE(shaders.fragment.find("vec3 total = vec3(0.0);\n    return total;"),
+              std::string::npos);
 }
 
 int validator_exit(const std::string& arguments) {
-    const std::string command = std::string(LITKIT_GLSLANG_VALIDATOR) + " " + arguments + " >/dev/null 2>&1";
+    const std::string command =
+        std::string(LITKIT_GLSLANG_VALIDATOR) + " " + arguments + " >/dev/null 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -122,22 +135,26 @@ int validator_exit(const std::string& arguments) {
 TEST(GlslSpecialised, EveryModelCompilesAndLinksWithGlslangValidator) {
     ASSERT_FALSE(std::string(LITKIT_GLSLANG_VALIDATOR).empty())
         << "glslangValidator was not found when the build was configured (scripts/install-deps.sh)";
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / ("litkit-specialised-" + std::to_string(::getpid()));
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                         ("litkit-specialised-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     for (const litkit::ReflectionModel& model : litkit::reflection_models()) {
-        for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
+        for (Shading shading :
+             {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
             // Gamma 1 differs only by the power left out; one model is enough.
             std::vector<float> gammas{2.2f};
             if (model.id == Reflection::Phong) gammas.push_back(1.0f);
             for (float gamma : gammas) {
                 const litkit::glsl::Shaders shaders =
                     litkit::glsl::generate(model.id, shading, four_kinds(), gamma);
-                const std::filesystem::path vertex = folder / "p.vert", fragment = folder / "p.frag";
+                const std::filesystem::path vertex = folder / "p.vert",
+                                            fragment = folder / "p.frag";
                 std::ofstream(vertex) << shaders.vertex;
                 std::ofstream(fragment) << shaders.fragment;
-                EXPECT_EQ(validator_exit("-l '" + vertex.string() + "' '" + fragment.string() + "'"), 0)
-                    << model.name << " / " << litkit::to_string(shading) << " gamma " << gamma << "\n"
+                EXPECT_EQ(
+                    validator_exit("-l '" + vertex.string() + "' '" + fragment.string() + "'"), 0)
+                    << model.name << " / " << litkit::to_string(shading) << " gamma " << gamma
+                    << "\n"
                     << shaders.vertex << "\n"
                     << shaders.fragment;
             }
@@ -147,8 +164,10 @@ TEST(GlslSpecialised, EveryModelCompilesAndLinksWithGlslangValidator) {
 }
 
 TEST(GlSpecialised, EveryKindOfLightInOneSceneMatchesCpu) {
-    for (Reflection reflection : {Reflection::Lambert, Reflection::BlinnPhong, Reflection::CookTorrance}) {
-        for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
+    for (Reflection reflection :
+         {Reflection::Lambert, Reflection::BlinnPhong, Reflection::CookTorrance}) {
+        for (Shading shading :
+             {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
             litkit::Scene scene = scene_with(four_kinds(), reflection, shading);
             for (float gamma : {1.0f, 2.2f}) {
                 scene.output.gamma = gamma;
@@ -196,14 +215,16 @@ TEST(GlSpecialised, BeyondSixteenLightsTheGeneralProgramDraws) {
         std::vector<litkit::Light> lights;
         for (int i = 0; i < count; ++i) {
             const float angle = 0.37f * static_cast<float>(i);
-            lights.push_back(i % 4 == 1 ? litkit::Light{litkit::AmbientLight{}, glm::vec3(1.0f), 0.02f}
-                                        : litkit::Light{litkit::PointLight{{3.0f * std::cos(angle), 1.5f,
-                                                                            3.0f * std::sin(angle)},
-                                                                           {1.0f, 0.0f, 0.0f}},
-                                                        glm::vec3(1.0f), 0.06f});
+            lights.push_back(i % 4 == 1
+                                 ? litkit::Light{litkit::AmbientLight{}, glm::vec3(1.0f), 0.02f}
+                                 : litkit::Light{litkit::PointLight{{3.0f * std::cos(angle), 1.5f,
+                                                                     3.0f * std::sin(angle)},
+                                                                    {1.0f, 0.0f, 0.0f}},
+                                                 glm::vec3(1.0f), 0.06f});
         }
         const litkit::Scene scene = scene_with(lights, Reflection::BlinnPhong, Shading::Phong);
-        expect_matches_cpu(litkit::GlRenderer(scene).render(), scene, std::to_string(count) + " lights");
+        expect_matches_cpu(litkit::GlRenderer(scene).render(), scene,
+                           std::to_string(count) + " lights");
     }
 }
 

@@ -677,10 +677,9 @@ TEST_P(GlslNumericReflection, ReflectionTerms) {
         set_input(bindings, "to_light", to_light);
         set_input(bindings, "to_eye", to_eye);
         set_input(bindings, "material", material);
-        expect_values(
-            function, bindings,
-            {reflected.diffuse, reflected.color.x, reflected.color.y, reflected.color.z,
-             reflected.specular});
+        expect_values(function, bindings,
+                      {reflected.diffuse, reflected.color.x, reflected.color.y, reflected.color.z,
+                       reflected.specular});
     };
     const float shininesses[] = {0.0f, 1.0f, 32.0f, 0.5f};
     for (int i = 0; i < random_cases; ++i) {

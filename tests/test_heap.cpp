@@ -76,8 +76,7 @@ TEST(Heap, LargeBlocksLieInHugePages) {
     // Larger than glibc's largest mmap threshold (32 MiB): without the
     // set-up, a block of its own mapping, and in "madvise" mode no huge page.
     std::vector<unsigned char> block(std::size_t{40} << 20, 1);
-    EXPECT_GE(huge_kilobytes_at(block.data() + block.size() / 2), 2048)
-        << "THP mode " << mode;
+    EXPECT_GE(huge_kilobytes_at(block.data() + block.size() / 2), 2048) << "THP mode " << mode;
     utsname system{};
     uname(&system);
     int major = 0;

@@ -15,8 +15,8 @@
 #include <string>
 #include <thread>
 
-#include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "litkit/error.hpp"
 #include "litkit/image.hpp"
 
 namespace fs = std::filesystem;
@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 namespace {
 
 class ScratchDir : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir = fs::temp_directory_path() /
               ("litkit-image-" + std::to_string(::getpid()) + "-" +
@@ -100,9 +100,9 @@ TEST_F(ScratchDir, PngOfEverySizeAndLevelRoundTrips) {
     // 12000 × 30: rows of 36,001 bytes, one a stream (two would pass
     // 64,000). Rows longer than a stream are read back without libpng
     // (which reads at most 16384 pixels a side) in the test below.
-    for (const auto& [width, height] : {std::pair{3, 1}, std::pair{37, 21}, std::pair{700, 400},
-                                        std::pair{1920, 1080}, std::pair{4000, 2},
-                                        std::pair{12000, 30}}) {
+    for (const auto& [width, height] :
+         {std::pair{3, 1}, std::pair{37, 21}, std::pair{700, 400}, std::pair{1920, 1080},
+          std::pair{4000, 2}, std::pair{12000, 30}}) {
         const litkit::Image original = mixed_picture(width, height);
         for (const int level : {0, 1, 6, 9}) {
             if (level > 1 && width * height > 700 * 400) continue;  // time
@@ -246,7 +246,8 @@ TEST_F(ScratchDir, FailedWriteOverADirectoryLeavesItAndNoTemporaryFile) {
         litkit::write_png(gradient(2, 2), dir / "out.png");
         FAIL() << "writing over a directory must fail";
     } catch (const litkit::IoError& error) {
-        EXPECT_NE(std::string(error.what()).find("cannot write"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("cannot write"), std::string::npos)
+            << error.what();
     }
     EXPECT_TRUE(fs::is_directory(dir / "out.png"));
     int entries = 0;

@@ -23,8 +23,8 @@
 #include <glm/geometric.hpp>
 
 #include "cpu/shade_kernel.hpp"
-#include "litkit/lighting.hpp"  // to_pixel
 #include "cpu/shade_kernel_impl.hpp"  // equations::pow of batches
+#include "litkit/lighting.hpp"        // to_pixel
 
 namespace {
 
@@ -32,10 +32,14 @@ using litkit::kernels::Kernels;
 
 std::vector<const Kernels*> runnable_sets() {
     std::vector<const Kernels*> sets{&litkit::kernels::portable_kernels};
-    if (litkit::kernels::cpu_has_avx2()) sets.push_back(&litkit::kernels::avx2_kernels);
-    else std::printf("skipped the avx2 set: this CPU lacks AVX2 or FMA\n");
-    if (litkit::kernels::cpu_has_avx512()) sets.push_back(&litkit::kernels::avx512_kernels);
-    else std::printf("skipped the avx512 set: this CPU lacks AVX-512 F/BW/DQ/VL\n");
+    if (litkit::kernels::cpu_has_avx2())
+        sets.push_back(&litkit::kernels::avx2_kernels);
+    else
+        std::printf("skipped the avx2 set: this CPU lacks AVX2 or FMA\n");
+    if (litkit::kernels::cpu_has_avx512())
+        sets.push_back(&litkit::kernels::avx512_kernels);
+    else
+        std::printf("skipped the avx512 set: this CPU lacks AVX-512 F/BW/DQ/VL\n");
     return sets;
 }
 
@@ -70,10 +74,11 @@ TEST(Kernels, WeightsAndInterpolationRoundAsTheScalarFormulasOnEveryLength) {
                 for (float& v : c) v = value(random);
             std::vector<float> out[3];
             for (auto& o : out) o.assign(count + 1, -1.0f);  // one past: must stay
-            std::vector<float> weights[4];  // w, q0, q1, q2
+            std::vector<float> weights[4];                   // w, q0, q1, q2
             for (auto& q : weights) q.assign(count + 1, -1.0f);
-            set->perspective_weights(inverse_w.data(), w1.data(), w2.data(), count, weights[0].data(),
-                                     weights[1].data(), weights[2].data(), weights[3].data());
+            set->perspective_weights(inverse_w.data(), w1.data(), w2.data(), count,
+                                     weights[0].data(), weights[1].data(), weights[2].data(),
+                                     weights[3].data());
             set->interpolate(weights[1].data(), weights[2].data(), weights[3].data(), count, normal,
                              {out[0].data(), out[1].data(), out[2].data()});
             for (std::size_t i = 0; i < count; ++i) {
@@ -84,12 +89,14 @@ TEST(Kernels, WeightsAndInterpolationRoundAsTheScalarFormulasOnEveryLength) {
                 for (int k = 0; k < 4; ++k)
                     ASSERT_EQ(std::memcmp(&expected_weights[k], &weights[k][i], sizeof(float)), 0)
                         << set->name << ": " << count << " pixels, pixel " << i << ", value " << k
-                        << " (w, q0, q1, q2): " << weights[k][i] << " instead of " << expected_weights[k];
+                        << " (w, q0, q1, q2): " << weights[k][i] << " instead of "
+                        << expected_weights[k];
                 for (int k = 0; k < 3; ++k) {
-                    const float expected = mix(q0, q1, q2, normal[0][k], normal[1][k], normal[2][k]);
+                    const float expected =
+                        mix(q0, q1, q2, normal[0][k], normal[1][k], normal[2][k]);
                     ASSERT_EQ(std::memcmp(&expected, &out[k][i], sizeof(float)), 0)
-                        << set->name << ": span of " << count << ", pixel " << i << ", normal "
-                        << k << ": " << out[k][i] << " instead of " << expected;
+                        << set->name << ": span of " << count << ", pixel " << i << ", normal " << k
+                        << ": " << out[k][i] << " instead of " << expected;
                     ++compared;
                 }
             }
@@ -113,8 +120,10 @@ struct VisibilityBuffers {
     explicit VisibilityBuffers(std::size_t n) : depth(n), weight1(n), weight2(n), visible(n) {}
     bool operator==(const VisibilityBuffers& other) const {
         return std::memcmp(depth.data(), other.depth.data(), depth.size() * sizeof(float)) == 0 &&
-               std::memcmp(weight1.data(), other.weight1.data(), depth.size() * sizeof(float)) == 0 &&
-               std::memcmp(weight2.data(), other.weight2.data(), depth.size() * sizeof(float)) == 0 &&
+               std::memcmp(weight1.data(), other.weight1.data(), depth.size() * sizeof(float)) ==
+                   0 &&
+               std::memcmp(weight2.data(), other.weight2.data(), depth.size() * sizeof(float)) ==
+                   0 &&
                visible == other.visible;
     }
 };
@@ -153,7 +162,8 @@ class GuardedCopy {
 #endif
 
 // One pixel's test and writes, as rasterize.cpp states them.
-void expect_pixel(float p0, float p1, float p2, const void* triangle, VisibilityBuffers& b, std::size_t i) {
+void expect_pixel(float p0, float p1, float p2, const void* triangle, VisibilityBuffers& b,
+                  std::size_t i) {
     volatile float sum = p0 + p1;
     const float inverse_w = sum + p2;
     if (inverse_w <= b.depth[i]) return;
@@ -175,8 +185,8 @@ TEST(Kernels, ShadePhongLightsThePointOnEachPixelsRay) {
     std::mt19937 random(11);
     std::uniform_real_distribution<float> depth(2.0f, 4.0f), tilt(-0.3f, 0.3f);
     const litkit::RowRays rays{{0.0f, 0.5f, 5.0f}, {0.0f, -0.1f, -1.0f}, {0.004f, 0.001f, 0.0f}};
-    const std::vector<litkit::equations::PreparedLight> lights{
-        litkit::equations::prepare_light(litkit::Light{litkit::PointLight{{0.3f, 1.0f, 2.5f}}, {1, 1, 1}, 3.0f})};
+    const std::vector<litkit::equations::PreparedLight> lights{litkit::equations::prepare_light(
+        litkit::Light{litkit::PointLight{{0.3f, 1.0f, 2.5f}}, {1, 1, 1}, 3.0f})};
     litkit::Material material;
     material.shininess = 40.0f;
     material.ks = 0.6f;
@@ -191,7 +201,8 @@ TEST(Kernels, ShadePhongLightsThePointOnEachPixelsRay) {
                 for (int c = 0; c < 3; ++c) normals[c].push_back(n[c]);
             }
             set->shade_phong(litkit::Reflection::Phong, lights, material,
-                             {&rays, first_k, w.data(), normals[0].data(), normals[1].data(), normals[2].data(), count},
+                             {&rays, first_k, w.data(), normals[0].data(), normals[1].data(),
+                              normals[2].data(), count},
                              {r.data(), g.data(), b.data()});
             for (std::size_t i = 0; i < count; ++i) {
                 const float k = first_k + 2.0f * static_cast<float>(i);
@@ -204,12 +215,13 @@ TEST(Kernels, ShadePhongLightsThePointOnEachPixelsRay) {
                 }
                 const glm::vec3 n(normals[0][i], normals[1][i], normals[2][i]);
                 const glm::vec3 expected = litkit::equations::shade_scalar(
-                    litkit::Reflection::Phong, lights, litkit::equations::splat<float>(material), p, n,
-                    glm::vec3(rays.eye[0], rays.eye[1], rays.eye[2]));
+                    litkit::Reflection::Phong, lights, litkit::equations::splat<float>(material), p,
+                    n, glm::vec3(rays.eye[0], rays.eye[1], rays.eye[2]));
                 const float got[3] = {r[i], g[i], b[i]};
                 for (int c = 0; c < 3; ++c)
                     ASSERT_NEAR(got[c], expected[c], 1e-5f + 1e-5f * std::abs(expected[c]))
-                        << set->name << ": " << count << " pixels, pixel " << i << ", channel " << c;
+                        << set->name << ": " << count << " pixels, pixel " << i << ", channel "
+                        << c;
             }
         }
     }
@@ -244,7 +256,8 @@ TEST(Kernels, EncodeWritesToPixelsBytesOnEveryLength) {
                 set->encode(channel[0].data(), channel[1].data(), channel[2].data(), count, gamma,
                             written.data());
 #endif
-                ASSERT_EQ(written, expected) << set->name << ", " << count << " pixels, gamma " << gamma;
+                ASSERT_EQ(written, expected)
+                    << set->name << ", " << count << " pixels, gamma " << gamma;
             }
         }
     }
@@ -252,7 +265,8 @@ TEST(Kernels, EncodeWritesToPixelsBytesOnEveryLength) {
 
 TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
     std::mt19937 random(61);
-    std::uniform_int_distribution<std::int64_t> value(-(std::int64_t{1} << 40), std::int64_t{1} << 40),
+    std::uniform_int_distribution<std::int64_t> value(-(std::int64_t{1} << 40),
+                                                      std::int64_t{1} << 40),
         step(-(std::int64_t{1} << 20), std::int64_t{1} << 20);
     std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-13f, 1e-11f);
     int triangle_tag = 0;
@@ -276,9 +290,11 @@ TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
                     const auto at = static_cast<std::int64_t>(i);
                     expect_pixel(static_cast<float>(v[0] + at * s[0]) * w[0],
                                  static_cast<float>(v[1] + at * s[1]) * w[1],
-                                 static_cast<float>(v[2] + at * s[2]) * w[2], triangle, expected, i);
+                                 static_cast<float>(v[2] + at * s[2]) * w[2], triangle, expected,
+                                 i);
                 }
-                ASSERT_TRUE(got == expected) << set->name << ": a row of " << count << ", trial " << trial;
+                ASSERT_TRUE(got == expected)
+                    << set->name << ": a row of " << count << ", trial " << trial;
             }
         }
     }
@@ -292,13 +308,16 @@ TEST(Kernels, VisibilityRowsMatchThePixelRuleOnEveryLength) {
 TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
     constexpr std::int32_t one = static_cast<std::int32_t>(litkit::kernels::subpixel_one);
     std::mt19937 random(62);
-    std::uniform_int_distribution<std::int32_t> base(-3 * one, 6 * one), extent(0, 8 * one), coin(0, 3);
+    std::uniform_int_distribution<std::int32_t> base(-3 * one, 6 * one), extent(0, 8 * one),
+        coin(0, 3);
     std::uniform_real_distribution<float> depth(0.0f, 2.0f), weight(1e-9f, 1e-7f);
     int triangle_tag = 0;
     int sets_with_kernel = 0;
     for (const Kernels* set : runnable_sets()) {
         if (!set->visibility_small) {
-            std::printf("the %s set has no visibility_small (rasterize.cpp tests pixels one by one)\n", set->name);
+            std::printf(
+                "the %s set has no visibility_small (rasterize.cpp tests pixels one by one)\n",
+                set->name);
             continue;
         }
         ++sets_with_kernel;
@@ -350,7 +369,9 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
             t.max_y_small = static_cast<std::uint16_t>(bottom | 0x8000);
             for (float& w : t.weight) w = weight(random);
             // Sometimes the band starts below its first row.
-            const int first_row = top + (coin(random) == 0 ? std::uniform_int_distribution<int>(0, bottom - top)(random) : 0);
+            const int first_row = top + (coin(random) == 0 ? std::uniform_int_distribution<int>(
+                                                                 0, bottom - top)(random)
+                                                           : 0);
             const int rows = bottom - first_row + 1;
             const int span = right - left;
             ++triangles;
@@ -363,33 +384,36 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
                 got.weight1[i] = got.weight2[i] = -1.0f;
             }
             expected = got;
-            std::vector<int> begin_got(static_cast<std::size_t>(rows), 100), end_got(begin_got.size(), 0);
+            std::vector<int> begin_got(static_cast<std::size_t>(rows), 100),
+                end_got(begin_got.size(), 0);
             std::vector<int> begin_expected = begin_got, end_expected = end_got;
 #if defined(__linux__)
             {
                 // The same call on buffers that end at an inaccessible page:
                 // it must not touch past them, and writes the same.
-                GuardedCopy<float> depth_copy(got.depth), weight1_copy(got.weight1), weight2_copy(got.weight2);
+                GuardedCopy<float> depth_copy(got.depth), weight1_copy(got.weight1),
+                    weight2_copy(got.weight2);
                 GuardedCopy<const void*> visible_copy(got.visible);
                 GuardedCopy<int> begin_copy(begin_got), end_copy(end_got);
-                set->visibility_small(t, first_row, rows, &triangle_tag, depth_copy.data(), visible_copy.data(),
-                                      weight1_copy.data(), weight2_copy.data(), stride, begin_copy.data(),
-                                      end_copy.data());
+                set->visibility_small(t, first_row, rows, &triangle_tag, depth_copy.data(),
+                                      visible_copy.data(), weight1_copy.data(), weight2_copy.data(),
+                                      stride, begin_copy.data(), end_copy.data());
                 VisibilityBuffers guarded = got;
                 guarded.depth = depth_copy.values();
                 guarded.weight1 = weight1_copy.values();
                 guarded.weight2 = weight2_copy.values();
                 guarded.visible = visible_copy.values();
-                set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(), got.visible.data(),
-                                      got.weight1.data(), got.weight2.data(), stride, begin_got.data(),
-                                      end_got.data());
+                set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(),
+                                      got.visible.data(), got.weight1.data(), got.weight2.data(),
+                                      stride, begin_got.data(), end_got.data());
                 ASSERT_TRUE(guarded == got) << set->name << ": triangle " << triangles;
                 ASSERT_EQ(begin_copy.values(), begin_got);
                 ASSERT_EQ(end_copy.values(), end_got);
             }
 #else
-            set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(), got.visible.data(),
-                                  got.weight1.data(), got.weight2.data(), stride, begin_got.data(), end_got.data());
+            set->visibility_small(t, first_row, rows, &triangle_tag, got.depth.data(),
+                                  got.visible.data(), got.weight1.data(), got.weight2.data(),
+                                  stride, begin_got.data(), end_got.data());
 #endif
             for (int r = 0; r < rows; ++r) {
                 for (int x = left; x <= right; ++x) {
@@ -410,19 +434,23 @@ TEST(Kernels, SmallTrianglesMatchThePixelRuleInEveryLane) {
                     ++covered_at[static_cast<std::size_t>(x - left)];
                     begin_expected[r] = std::min(begin_expected[r], x);
                     end_expected[r] = std::max(end_expected[r], x + 1);
-                    expect_pixel(static_cast<float>(e[0]) * t.weight[0], static_cast<float>(e[1]) * t.weight[1],
-                                 static_cast<float>(e[2]) * t.weight[2], &triangle_tag, expected,
-                                 static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(x));
+                    expect_pixel(
+                        static_cast<float>(e[0]) * t.weight[0],
+                        static_cast<float>(e[1]) * t.weight[1],
+                        static_cast<float>(e[2]) * t.weight[2], &triangle_tag, expected,
+                        static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(x));
                 }
             }
-            ASSERT_TRUE(got == expected) << set->name << ": triangle " << triangles << ", span " << span
-                                         << ", rows " << rows;
+            ASSERT_TRUE(got == expected) << set->name << ": triangle " << triangles << ", span "
+                                         << span << ", rows " << rows;
             ASSERT_EQ(begin_got, begin_expected) << set->name << ": triangle " << triangles;
             ASSERT_EQ(end_got, end_expected) << set->name << ": triangle " << triangles;
         }
-        for (int span = 0; span <= 8; ++span) EXPECT_GT(spans[static_cast<std::size_t>(span)], 20) << "span " << span;
+        for (int span = 0; span <= 8; ++span)
+            EXPECT_GT(spans[static_cast<std::size_t>(span)], 20) << "span " << span;
         for (int x = 0; x < 8; ++x)
-            EXPECT_GT(covered_at[static_cast<std::size_t>(x)], 20) << "pixel " << x << " of a box's row";
+            EXPECT_GT(covered_at[static_cast<std::size_t>(x)], 20)
+                << "pixel " << x << " of a box's row";
         EXPECT_GT(on_edges, 1000) << "pixel centres on edges (the top-left rule) too rarely";
     }
     if (sets_with_kernel == 0) std::printf("no set on this CPU has visibility_small\n");
@@ -461,8 +489,10 @@ ExpectedVertex expected_vertex(const float m[16], const float p[3], float half_w
     volatile float px = x * inverse_w, py = y * inverse_w;
     volatile float sx = px + 1.0f, sy = 1.0f - py;
     const double fixed_x = static_cast<double>(sx * half_width) * static_cast<double>(subpixel_one);
-    const double fixed_y = static_cast<double>(sy * half_height) * static_cast<double>(subpixel_one);
-    if (!(std::abs(fixed_x) < largest_fixed_coordinate && std::abs(fixed_y) < largest_fixed_coordinate))
+    const double fixed_y =
+        static_cast<double>(sy * half_height) * static_cast<double>(subpixel_one);
+    if (!(std::abs(fixed_x) < largest_fixed_coordinate &&
+          std::abs(fixed_y) < largest_fixed_coordinate))
         return e;
     e.corner.x = static_cast<std::int32_t>(std::floor(fixed_x + 0.5));  // exact in double
     e.corner.y = static_cast<std::int32_t>(std::floor(fixed_y + 0.5));
@@ -509,8 +539,8 @@ TEST(Kernels, TransformVerticesFollowsTheVertexStageRuleInEveryLane) {
         for (const auto& m : matrices) {
             const bool aimed = &m == &matrices.back();
             const float half_width = aimed ? 0.5f : 960.0f, half_height = aimed ? 0.5f : 540.0f;
-            for (std::size_t count : {std::size_t{1}, std::size_t{7}, std::size_t{16}, std::size_t{17},
-                                      std::size_t{33}, vertices}) {
+            for (std::size_t count : {std::size_t{1}, std::size_t{7}, std::size_t{16},
+                                      std::size_t{17}, std::size_t{33}, vertices}) {
                 for (std::size_t first = 0; first + count <= vertices; first += count) {
                     std::vector<float> clip(4 * count + 4, -7.0f);  // one past: must stay
                     std::vector<litkit::kernels::WindowCorner> window(count + 1);
@@ -518,14 +548,17 @@ TEST(Kernels, TransformVerticesFollowsTheVertexStageRuleInEveryLane) {
                     set->transform_vertices(&points[3 * first], count, m.data(), half_width,
                                             half_height, clip.data(), window.data());
                     for (std::size_t i = 0; i < count; ++i) {
-                        const ExpectedVertex e =
-                            expected_vertex(m.data(), &points[3 * (first + i)], half_width, half_height);
+                        const ExpectedVertex e = expected_vertex(m.data(), &points[3 * (first + i)],
+                                                                 half_width, half_height);
                         const auto& got = window[i];
                         for (int r = 0; r < 4; ++r)
-                            ASSERT_TRUE(same_bits(clip[4 * i + static_cast<std::size_t>(r)], e.clip[r]))
+                            ASSERT_TRUE(
+                                same_bits(clip[4 * i + static_cast<std::size_t>(r)], e.clip[r]))
                                 << set->name << ": vertex " << first + i << " clip " << r;
-                        ASSERT_EQ(got.valid, e.corner.valid) << set->name << ": vertex " << first + i;
-                        ASSERT_EQ(got.outside, e.corner.outside) << set->name << ": vertex " << first + i;
+                        ASSERT_EQ(got.valid, e.corner.valid)
+                            << set->name << ": vertex " << first + i;
+                        ASSERT_EQ(got.outside, e.corner.outside)
+                            << set->name << ": vertex " << first + i;
                         ASSERT_EQ(got.x, e.corner.x) << set->name << ": vertex " << first + i;
                         ASSERT_EQ(got.y, e.corner.y) << set->name << ": vertex " << first + i;
                         ASSERT_TRUE(same_bits(got.inverse_w, e.corner.inverse_w))
@@ -533,7 +566,8 @@ TEST(Kernels, TransformVerticesFollowsTheVertexStageRuleInEveryLane) {
                         ++checked;
                         (e.corner.valid ? valid : invalid) += 1;
                         if (aimed && e.corner.valid) {
-                            const double fixed = (static_cast<double>(points[3 * (first + i)]) + 1.0) * 128.0;
+                            const double fixed =
+                                (static_cast<double>(points[3 * (first + i)]) + 1.0) * 128.0;
                             halves += std::abs(fixed - std::round(fixed)) == 0.5;
                         }
                     }
@@ -585,12 +619,14 @@ TEST(Kernels, PowOfBatchesIsThePowerForWholeExponentsAndXsimdsOtherwise) {
     // Not a whole number from 0 to 64 in every lane: xsimd::pow, bit for bit.
     alignas(64) float mixed[lanes];
     for (std::size_t j = 0; j < lanes; ++j) mixed[j] = j % 2 ? 32.0f : 31.0f;
-    for (const Batch exponent : {Batch(2.5f), Batch(65.0f), Batch(-2.0f), Batch::load_aligned(mixed)}) {
+    for (const Batch exponent :
+         {Batch(2.5f), Batch(65.0f), Batch(-2.0f), Batch::load_aligned(mixed)}) {
         for (std::size_t i = 0; i < bases.size(); i += lanes) {
             const Batch base = Batch::load_unaligned(&bases[i]);
             alignas(64) float got[lanes], expected[lanes];
             litkit::equations::pow(base, exponent).store_aligned(got);
-            xsimd::select(base == Batch(0.0f), Batch(0.0f), xsimd::pow(base, exponent)).store_aligned(expected);
+            xsimd::select(base == Batch(0.0f), Batch(0.0f), xsimd::pow(base, exponent))
+                .store_aligned(expected);
             for (std::size_t j = 0; j < lanes; ++j)
                 ASSERT_TRUE(same_bits(got[j], expected[j])) << bases[i + j] << " lane " << j;
         }

@@ -1306,9 +1306,9 @@ TEST(Shade, RefusesANormalThatIsNotUnitLength) {
                  litkit::ArgumentError);
     EXPECT_THROW(litkit::shade(Reflection::Phong, Material{}, lights, origin, {0, 0, 0}, {0, 5, 0}),
                  litkit::ArgumentError);
-    EXPECT_THROW(litkit::shade_terms(Reflection::Phong, Material{}, lights, origin, {0, 0.9f, 0},
-                                     {0, 5, 0}),
-                 litkit::ArgumentError);
+    EXPECT_THROW(
+        litkit::shade_terms(Reflection::Phong, Material{}, lights, origin, {0, 0.9f, 0}, {0, 5, 0}),
+        litkit::ArgumentError);
     EXPECT_THROW(litkit::shade(Reflection::Phong, Material{}, lights, origin, up, origin),
                  litkit::ArgumentError);
     // Within the tolerance (1e-3) it is used as given.

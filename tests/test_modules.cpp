@@ -5,8 +5,8 @@
 // message, never a crash. Most tests run a copy of the CLI in a folder of
 // its own, laid out as an install (bin/litkit, lib/litkit/), with or without
 // a module there.
-#include <gtest/gtest.h>
 #include <dlfcn.h>
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <exception>
@@ -37,10 +37,11 @@ std::string quoted(const fs::path& path) {
 }
 
 class Modules : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        dir = fs::temp_directory_path() / ("litkit-modules-" + std::to_string(getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() /
+              ("litkit-modules-" + std::to_string(getpid()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         fs::create_directories(dir / "bin");
         fs::create_directories(dir / "lib" / "litkit");
@@ -55,13 +56,14 @@ protected:
     // say the same, tests/CMakeLists.txt): no leak check for the copy that
     // may draw with OpenGL under ASan.
     litkit_test::CommandRun run(const std::string& arguments) const {
-        return run_command("cd " + quoted(dir) + " && ASAN_OPTIONS=detect_leaks=0 " + quoted(cli()) + " " +
-                           arguments);
+        return run_command("cd " + quoted(dir) + " && ASAN_OPTIONS=detect_leaks=0 " +
+                           quoted(cli()) + " " + arguments);
     }
     // A real shared library without a litkit entry point: libstdc++.
     static std::string some_other_library() {
         Dl_info library{};
-        if (dladdr(reinterpret_cast<void*>(&std::terminate), &library) == 0 || !library.dli_fname) return {};
+        if (dladdr(reinterpret_cast<void*>(&std::terminate), &library) == 0 || !library.dli_fname)
+            return {};
         return library.dli_fname;
     }
 
@@ -75,9 +77,10 @@ TEST(ModulesLinking, TheExecutableLoadsNoWindowOrOpenGlLibraries) {
     const auto loaded = run_command("LD_TRACE_LOADED_OBJECTS=1 '" LITKIT_CLI "'");
     ASSERT_EQ(loaded.status, 0) << loaded.output;
     ASSERT_NE(loaded.output.find("libc.so"), std::string::npos) << loaded.output;
-    for (const char* library :
-         {"libSDL2", "libimgui", "libX11", "libwayland", "libpulse", "libasound", "libepoxy", "libEGL", "libGL"})
-        EXPECT_EQ(loaded.output.find(library), std::string::npos) << library << " in\n" << loaded.output;
+    for (const char* library : {"libSDL2", "libimgui", "libX11", "libwayland", "libpulse",
+                                "libasound", "libepoxy", "libEGL", "libGL"})
+        EXPECT_EQ(loaded.output.find(library), std::string::npos) << library << " in\n"
+                                                                  << loaded.output;
 }
 
 #if LITKIT_CLI_LINKED_STATICALLY
@@ -94,11 +97,12 @@ TEST(ModulesLinking, TheStaticallyLinkedExecutableLoadsOnlyTheCLibrary) {
     for (std::string line; std::getline(lines, line);) {
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         ++count;
-        const bool expected = line.find("linux-vdso.so") != std::string::npos ||
-                              line.find("libc.so.6") != std::string::npos ||
-                              line.find("libm.so.6") != std::string::npos ||
-                              line.find("ld-linux") != std::string::npos ||
-                              (LITKIT_CLI_LOADS_ISAL && line.find("libisal.so.2") != std::string::npos);
+        const bool expected =
+            line.find("linux-vdso.so") != std::string::npos ||
+            line.find("libc.so.6") != std::string::npos ||
+            line.find("libm.so.6") != std::string::npos ||
+            line.find("ld-linux") != std::string::npos ||
+            (LITKIT_CLI_LOADS_ISAL && line.find("libisal.so.2") != std::string::npos);
         EXPECT_TRUE(expected) << "unexpected: " << line;
     }
     EXPECT_EQ(count, LITKIT_CLI_LOADS_ISAL ? 5 : 4) << loaded.output;
@@ -137,7 +141,8 @@ TEST(ModulesCrossing, NothingThrownIsNoError) {
 }
 
 TEST(ModulesCrossing, SceneErrorKeepsItsDiagnosticsAndWarnings) {
-    const litkit::Diagnostic problem{{"a.toml", 3, 7}, litkit::Severity::Error, "radius must be > 0"};
+    const litkit::Diagnostic problem{
+        {"a.toml", 3, 7}, litkit::Severity::Error, "radius must be > 0"};
     const litkit::Diagnostic other{{"b.toml", 1, 1}, litkit::Severity::Error, "unknown key 'x'"};
     const litkit::Diagnostic warning{{"a.toml", 9, 2}, litkit::Severity::Warning, "no lights"};
     const auto error = caught_from([&] { throw litkit::SceneError({problem, other}, {warning}); });
@@ -153,7 +158,8 @@ TEST(ModulesCrossing, SceneErrorKeepsItsDiagnosticsAndWarnings) {
 
 TEST(ModulesCrossing, IoErrorKeepsPathReasonPlaceAndDirection) {
     const auto error = caught_from([] {
-        throw litkit::IoError("out.png", "No space left on device", {"s.toml", 4, 0}, litkit::IoError::Access::Write);
+        throw litkit::IoError("out.png", "No space left on device", {"s.toml", 4, 0},
+                              litkit::IoError::Access::Write);
     });
     EXPECT_EQ(error.kind, litkit_cli::CaughtError::Kind::Io);
     const auto again = thrown_again<litkit::IoError>(error);
@@ -164,7 +170,8 @@ TEST(ModulesCrossing, IoErrorKeepsPathReasonPlaceAndDirection) {
 }
 
 TEST(ModulesCrossing, EveryOtherKindIsThrownAgainAsItsOwnType) {
-    const auto gl = caught_from([] { throw litkit::GlError("OpenGL is not available: no display"); });
+    const auto gl =
+        caught_from([] { throw litkit::GlError("OpenGL is not available: no display"); });
     EXPECT_STREQ(thrown_again<litkit::GlError>(gl).what(), "OpenGL is not available: no display");
 
     const auto argument = caught_from([] { throw litkit::ArgumentError("radius 0", {"f", 2, 3}); });
@@ -192,9 +199,12 @@ TEST(ModulesCrossing, EveryOtherKindIsThrownAgainAsItsOwnType) {
 TEST_F(Modules, MissingViewerIsAClearErrorAndEveryOtherCommandWorks) {
     const auto view = run("view");
     EXPECT_EQ(view.status, 1) << view.output;
-    EXPECT_EQ(view.output.rfind("error: litkit view needs its module litkit-view.so, which is not installed", 0), 0u)
+    EXPECT_EQ(view.output.rfind(
+                  "error: litkit view needs its module litkit-view.so, which is not installed", 0),
+              0u)
         << view.output;
-    EXPECT_NE(view.output.find(installed("litkit-view.so").string()), std::string::npos) << view.output;
+    EXPECT_NE(view.output.find(installed("litkit-view.so").string()), std::string::npos)
+        << view.output;
 
     const auto render = run("render --width 40 --height 30 -o picture.png");
     EXPECT_EQ(render.status, 0) << render.output;
@@ -208,7 +218,9 @@ TEST_F(Modules, MissingViewerIsAClearErrorAndEveryOtherCommandWorks) {
 TEST_F(Modules, MissingOpenGlModuleIsAClearError) {
     const auto render = run("render --backend gl --width 40 --height 30 -o picture.png");
     EXPECT_EQ(render.status, 1) << render.output;
-    EXPECT_EQ(render.output.rfind("error: --backend gl needs its module litkit-gl.so, which is not installed", 0), 0u)
+    EXPECT_EQ(render.output.rfind(
+                  "error: --backend gl needs its module litkit-gl.so, which is not installed", 0),
+              0u)
         << render.output;
     EXPECT_FALSE(fs::exists(dir / "picture.png"));
 }
@@ -218,7 +230,8 @@ TEST_F(Modules, BrokenModuleIsAClearError) {
     const auto view = run("view");
     EXPECT_EQ(view.status, 1) << view.output;
     EXPECT_EQ(view.output.rfind("error: litkit view cannot load its module " +
-                                    installed("litkit-view.so").string() + ": ", 0),
+                                    installed("litkit-view.so").string() + ": ",
+                                0),
               0u)
         << view.output;
 }
@@ -230,8 +243,8 @@ TEST_F(Modules, ALibraryThatIsNotLitkitsModuleIsRefused) {
     const auto render = run("render --backend gl --width 40 --height 30 -o picture.png");
     EXPECT_EQ(render.status, 1) << render.output;
     const std::string version = run("--version").output;  // "litkit 0.1.0\n"
-    EXPECT_EQ(render.output, "error: " + installed("litkit-gl.so").string() + " is not a module of " +
-                                 version.substr(0, version.size() - 1) +
+    EXPECT_EQ(render.output, "error: " + installed("litkit-gl.so").string() +
+                                 " is not a module of " + version.substr(0, version.size() - 1) +
                                  " (another build's?); install litkit again\n");
 }
 
@@ -248,10 +261,12 @@ TEST(ModulesErrors, AnOpenGlErrorInTheModuleIsReportedAsWithoutIt) {
     // No EGL vendor for libglvnd: the module's GlRenderer throws GlError,
     // which the CLI reports with its hint, as when it drew in-process.
     const auto render = run_command("cd '" + fs::temp_directory_path().string() +
-                                    "' && ASAN_OPTIONS=detect_leaks=0 __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json '" LITKIT_CLI
+                                    "' && ASAN_OPTIONS=detect_leaks=0 "
+                                    "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json '" LITKIT_CLI
                                     "' render --backend gl -o /dev/null");
     EXPECT_EQ(render.status, 1) << render.output;
     EXPECT_EQ(render.output.rfind("error: OpenGL is not available: ", 0), 0u) << render.output;
-    EXPECT_NE(render.output.find("\nhint: render without OpenGL with --backend cpu\n"), std::string::npos)
+    EXPECT_NE(render.output.find("\nhint: render without OpenGL with --backend cpu\n"),
+              std::string::npos)
         << render.output;
 }

@@ -18,17 +18,17 @@
 #include <string>
 #include <vector>
 
-#include "core/parallel.hpp"                // internal (src/)
-#include "core/thread_pool.hpp"              // internal
-#include "geometry/corner_angle.hpp"       // internal
-#include "geometry/creased_normals.hpp"    // internal
-#include "scene/world_mesh.hpp"            // internal
+#include "core/parallel.hpp"             // internal (src/)
+#include "core/thread_pool.hpp"          // internal
+#include "geometry/corner_angle.hpp"     // internal
+#include "geometry/creased_normals.hpp"  // internal
 #include "litkit/error.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/shapes.hpp"
 #include "litkit/validate.hpp"
+#include "scene/world_mesh.hpp"  // internal
 
 namespace {
 
@@ -42,8 +42,8 @@ constexpr std::array<Normals, 4> weightings{Normals::Mean, Normals::Area, Normal
                                             Normals::Max};
 
 void expect_near(const glm::vec3& actual, const glm::vec3& expected, float within = 1e-6f) {
-    EXPECT_NEAR(actual.x, expected.x, within) << "actual " << actual.x << ", " << actual.y << ", "
-                                              << actual.z;
+    EXPECT_NEAR(actual.x, expected.x, within)
+        << "actual " << actual.x << ", " << actual.y << ", " << actual.z;
     EXPECT_NEAR(actual.y, expected.y, within);
     EXPECT_NEAR(actual.z, expected.z, within);
 }
@@ -185,7 +185,7 @@ TEST(NormalWeighting, CornerAngleIsAtan2) {
         return static_cast<double>(state >> 8) / 16777216.0;  // [0, 1)
     };
     std::vector<std::array<double, 2>> cases = {
-        {1.0, 0.0}, {1.0, 1.0}, {1.0, -1.0}, {1e-30, 1.0}, {1e-30, -1.0}, {1.0, 1e-30},
+        {1.0, 0.0}, {1.0, 1.0},  {1.0, -1.0}, {1e-30, 1.0}, {1e-30, -1.0}, {1.0, 1e-30},
         {3.0, 4.0}, {4.0, -3.0}, {0.25, 1.0}, {0.125, 1.0}, {0.375, -1.0}, {1e30, 3e29}};
     for (int i = 0; i < 200000; ++i) {
         const double scale = std::ldexp(1.0, static_cast<int>(next() * 40.0) - 20);
@@ -259,8 +259,8 @@ TEST(Crease, SixtyDegreesMakesEveryCubeCornerTakeItsFacesNormal) {
         ASSERT_EQ(normals.size(), cube.triangles.size() * 3);
         for (std::size_t t = 0; t < cube.triangles.size(); ++t) {
             const auto& c = cube.triangles[t];
-            const glm::vec3 face =
-                litkit::face_normal(cube.positions[c[0]], cube.positions[c[1]], cube.positions[c[2]]);
+            const glm::vec3 face = litkit::face_normal(cube.positions[c[0]], cube.positions[c[1]],
+                                                       cube.positions[c[2]]);
             for (int k = 0; k < 3; ++k) EXPECT_EQ(normals[3 * t + k], face);
         }
     }
@@ -389,12 +389,10 @@ TEST(FileNormals, ExactSphereNormalsMatchTheAnalyticSphereBetterThanMean) {
     // with the object (docs/spec.md §9.2).
     const litkit::SceneObject sphere =
         object_of(litkit::MeshFileShape{write_sphere_obj("sphere8x5.obj", 8, 5, true)});
-    const double file_error =
-        largest_error_from_radial(litkit::world_mesh(sphere, {Normals::File, std::nullopt}),
-                                  sphere.position);
-    const double mean_error =
-        largest_error_from_radial(litkit::world_mesh(sphere, {Normals::Mean, std::nullopt}),
-                                  sphere.position);
+    const double file_error = largest_error_from_radial(
+        litkit::world_mesh(sphere, {Normals::File, std::nullopt}), sphere.position);
+    const double mean_error = largest_error_from_radial(
+        litkit::world_mesh(sphere, {Normals::Mean, std::nullopt}), sphere.position);
     EXPECT_LT(file_error, 1e-3);  // float rounding of written text and rotation
     EXPECT_GT(mean_error, 10.0 * file_error);
 }
@@ -528,11 +526,11 @@ Mesh awkward_mesh() {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     mesh.positions.push_back({2.0f, 0.0f, 0.0f});
     mesh.positions.push_back({2.0f, 1.0f, 0.0f});
-    mesh.positions.push_back({2.0f, 2.0f, 0.0f});            // collinear: zero area
-    mesh.positions.push_back({2.0f, 0.0f, 1e-9f});           // welds with base
-    mesh.positions.push_back({5.0f, 5.0f, 5.0f});            // unused
-    mesh.positions.push_back({2.0f, 1.0f, 0.0f});            // duplicate of base + 1
-    mesh.positions.push_back({std::nanf(""), 0.0f, 0.0f});   // not finite
+    mesh.positions.push_back({2.0f, 2.0f, 0.0f});           // collinear: zero area
+    mesh.positions.push_back({2.0f, 0.0f, 1e-9f});          // welds with base
+    mesh.positions.push_back({5.0f, 5.0f, 5.0f});           // unused
+    mesh.positions.push_back({2.0f, 1.0f, 0.0f});           // duplicate of base + 1
+    mesh.positions.push_back({std::nanf(""), 0.0f, 0.0f});  // not finite
     mesh.triangles.push_back({base, base + 1, base + 2});
     mesh.triangles.push_back({base, base + 3, base + 1});
     mesh.triangles.push_back({base + 5, base, base + 6});
@@ -574,11 +572,13 @@ TEST(ParallelMeshBuilding, ThreadsGiveTheSameWorldMeshBitForBit) {
         pool.parallel_for(count, [&](std::size_t index, int) { job(index); });
     };
     const std::vector<litkit::SceneObject> objects = {
-        object_of(litkit::SphereShape{1.5f, 512, 256}), object_of(litkit::TorusShape{1.0f, 0.3f, 96, 48}),
-        object_of(litkit::TeapotShape{1.0f, 6}), object_of(litkit::CubeShape{2.0f})};
+        object_of(litkit::SphereShape{1.5f, 512, 256}),
+        object_of(litkit::TorusShape{1.0f, 0.3f, 96, 48}), object_of(litkit::TeapotShape{1.0f, 6}),
+        object_of(litkit::CubeShape{2.0f})};
     for (const litkit::SceneObject& object : objects) {
         for (const Normals weighting : weightings) {
-            for (const std::optional<float> crease : {std::optional<float>{}, std::optional<float>{60.0f}}) {
+            for (const std::optional<float> crease :
+                 {std::optional<float>{}, std::optional<float>{60.0f}}) {
                 const litkit::NormalOptions options{weighting, crease};
                 const litkit::WorldMesh alone = litkit::world_mesh(object, options);
                 const litkit::WorldMesh lent = litkit::world_mesh(object, options, threads);
@@ -618,13 +618,16 @@ TEST(BuiltMeshes, WorldMeshTakesTheMeshKeptForItsShapeOnce) {
     litkit::BuiltMeshes built;
     built.keep(sphere_object(40, 20).shape, marker_mesh());
     // Another parameter: not that mesh.
-    EXPECT_EQ(world_mesh_from(sphere_object(40, 21), built).triangles, litkit::make_sphere(1.5f, 40, 21).triangles);
+    EXPECT_EQ(world_mesh_from(sphere_object(40, 21), built).triangles,
+              litkit::make_sphere(1.5f, 40, 21).triangles);
     // Without the kept meshes: built.
-    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles, litkit::make_sphere(1.5f, 40, 20).triangles);
+    EXPECT_EQ(litkit::world_mesh(sphere_object(40, 20)).triangles,
+              litkit::make_sphere(1.5f, 40, 20).triangles);
     // The same parameters: taken (the marker's one triangle) ...
     EXPECT_EQ(world_mesh_from(sphere_object(40, 20), built).triangles.size(), 1u);
     // ... once: the next is built.
-    EXPECT_EQ(world_mesh_from(sphere_object(40, 20), built).triangles, litkit::make_sphere(1.5f, 40, 20).triangles);
+    EXPECT_EQ(world_mesh_from(sphere_object(40, 20), built).triangles,
+              litkit::make_sphere(1.5f, 40, 20).triangles);
 }
 
 TEST(BuiltMeshes, OnlyTheLastFourAreKept) {
@@ -632,8 +635,10 @@ TEST(BuiltMeshes, OnlyTheLastFourAreKept) {
     built.keep(sphere_object(30, 10).shape, marker_mesh());
     for (int rings = 11; rings <= 14; ++rings)
         built.keep(sphere_object(30, rings).shape, litkit::make_sphere(1.5f, 30, rings));
-    EXPECT_EQ(world_mesh_from(sphere_object(30, 10), built).triangles, litkit::make_sphere(1.5f, 30, 10).triangles);
-    EXPECT_EQ(world_mesh_from(sphere_object(30, 14), built).triangles, litkit::make_sphere(1.5f, 30, 14).triangles);
+    EXPECT_EQ(world_mesh_from(sphere_object(30, 10), built).triangles,
+              litkit::make_sphere(1.5f, 30, 10).triangles);
+    EXPECT_EQ(world_mesh_from(sphere_object(30, 14), built).triangles,
+              litkit::make_sphere(1.5f, 30, 14).triangles);
 }
 
 TEST(BuiltMeshes, MeshFilesAreNotKept) {

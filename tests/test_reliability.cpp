@@ -1,8 +1,8 @@
 // docs/reliability.md: output written whole to what the user named and nothing else;
 // input bounded, located and exact; scale. Real files, real device nodes and
 // FIFOs made in a temporary folder (the tests run as root), real signals.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/inotify.h>
 #include <sys/mount.h>
@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "litkit/error.hpp"
 #include "litkit/image.hpp"
 #include "run_command.hpp"
 
@@ -60,7 +60,7 @@ radius = 1
 )";
 
 class Reliability : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir = fs::temp_directory_path() /
               ("litkit-rel-" + std::to_string(::getpid()) + "-" +
@@ -77,9 +77,7 @@ protected:
         std::ifstream in(dir / name, std::ios::binary);
         return {std::istreambuf_iterator<char>(in), {}};
     }
-    CommandRun cli(const std::string& arguments) {
-        return shell("'" LITKIT_CLI "' " + arguments);
-    }
+    CommandRun cli(const std::string& arguments) { return shell("'" LITKIT_CLI "' " + arguments); }
     CommandRun shell(const std::string& command) {
         // In a subshell, so that run_command's own redirections apply to all of it.
         return run_command("cd '" + dir.string() + "' && ( " + command + " )");
@@ -188,15 +186,21 @@ TEST_F(Reliability, AFolderAsOutputGetsAClearMessage) {
     fs::create_directories(dir / "existing");
     CommandRun slash = cli("render scene.toml -o existing/");
     EXPECT_EQ(slash.status, 1);
-    EXPECT_NE(slash.output.find("error: cannot write 'existing/': is a folder; name a file to write"), std::string::npos)
+    EXPECT_NE(
+        slash.output.find("error: cannot write 'existing/': is a folder; name a file to write"),
+        std::string::npos)
         << slash.output;
     CommandRun bare = cli("render scene.toml -o existing");
     EXPECT_EQ(bare.status, 1);
-    EXPECT_NE(bare.output.find("error: cannot write 'existing': is a folder; name a file to write"), std::string::npos)
+    EXPECT_NE(bare.output.find("error: cannot write 'existing': is a folder; name a file to write"),
+              std::string::npos)
         << bare.output;
     CommandRun missing = cli("render scene.toml -o missing/");
     EXPECT_EQ(missing.status, 1);
-    EXPECT_NE(missing.output.find("error: cannot write 'missing/': names a folder (ends with '/'); name a file to write"), std::string::npos)
+    EXPECT_NE(
+        missing.output.find(
+            "error: cannot write 'missing/': names a folder (ends with '/'); name a file to write"),
+        std::string::npos)
         << missing.output;
     EXPECT_EQ(others({"scene.toml", "existing"}), std::vector<std::string>{});
     EXPECT_TRUE(fs::is_empty(dir / "existing"));
@@ -342,7 +346,7 @@ TEST_F(Reliability, ExportRefusesToWriteOverTheSceneItExports) {
 
 // Mounts a 64 KiB tmpfs at dir/small; the generated program is larger.
 class SmallDisk : public Reliability {
-protected:
+  protected:
     void SetUp() override {
         Reliability::SetUp();
         small = dir / "small";
@@ -410,8 +414,9 @@ TEST_F(Reliability, ATableHeaderOf50000PartsIsRefusedWhereItGoesTooDeep) {
     CommandRun run = cli("check deep.toml");
     EXPECT_EQ(run.status, 1) << run.output;
     // '[' is one level and each dot one more: the 64th dot, at column 129, is level 65.
-    EXPECT_EQ(run.output, "deep.toml:1:129: error: cannot read 'deep.toml': nested deeper than 64 "
-                          "levels (tables, arrays and dotted keys; docs/reliability.md)\n");
+    EXPECT_EQ(run.output,
+              "deep.toml:1:129: error: cannot read 'deep.toml': nested deeper than 64 "
+              "levels (tables, arrays and dotted keys; docs/reliability.md)\n");
 }
 
 TEST_F(Reliability, DeepDottedKeysArraysAndInlineTablesAreRefused) {
@@ -424,10 +429,9 @@ TEST_F(Reliability, DeepDottedKeysArraysAndInlineTablesAreRefused) {
     write("tables.toml", tables + "1" + std::string(50000, '}') + "\n");
     // The 65th level: the 65th dot of the key (column 130); the 65th '['
     // (column 4 + 65); the 65th '{' (column 4 + 64 * 5 + 1).
-    const std::pair<const char*, const char*> cases[] = {
-        {"key.toml", "key.toml:1:130:"},
-        {"arrays.toml", "arrays.toml:1:69:"},
-        {"tables.toml", "tables.toml:1:325:"}};
+    const std::pair<const char*, const char*> cases[] = {{"key.toml", "key.toml:1:130:"},
+                                                         {"arrays.toml", "arrays.toml:1:69:"},
+                                                         {"tables.toml", "tables.toml:1:325:"}};
     for (const auto& [file, place] : cases) {
         CommandRun run = cli(std::string("check ") + file);
         EXPECT_EQ(run.status, 1) << run.output;
@@ -441,7 +445,8 @@ TEST_F(Reliability, DeepDottedKeysArraysAndInlineTablesAreRefused) {
 
 TEST_F(Reliability, BracketsAndDotsInStringsAndCommentsAreNotNesting) {
     std::string scene = small_scene;
-    scene += "# " + std::string(200, '[') + " a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a\n";
+    scene +=
+        "# " + std::string(200, '[') + " a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a\n";
     std::string name = "name = \"" + std::string(100, '[');
     for (int i = 0; i < 100; ++i) name += "a.";
     scene += name + "\"\n";
@@ -470,8 +475,9 @@ TEST_F(Reliability, AZeroDeviceAsTheSceneIsRefusedQuicklyWithItsName) {
     // busy machine reads 256 MiB slowly.
     CommandRun run = cli("check zero");
     EXPECT_EQ(run.status, 1) << run.output;
-    EXPECT_EQ(run.output, "error: cannot read 'zero': larger than the limit of 256 MiB for scene "
-                          "and mesh files (docs/reliability.md)\n");
+    EXPECT_EQ(run.output,
+              "error: cannot read 'zero': larger than the limit of 256 MiB for scene "
+              "and mesh files (docs/reliability.md)\n");
 }
 
 TEST_F(Reliability, AZeroDeviceAsTheMeshIsRefusedWithItsName) {
@@ -481,8 +487,9 @@ TEST_F(Reliability, AZeroDeviceAsTheMeshIsRefusedWithItsName) {
     CommandRun run = cli("check mesh.toml");
     EXPECT_EQ(run.status, 1) << run.output;
     // Located at the scene's `file` key (line 28), as a mesh file that cannot be opened.
-    EXPECT_EQ(run.output, "mesh.toml:28:8: error: cannot read 'zero': larger than the limit of "
-                          "256 MiB for scene and mesh files (docs/reliability.md)\n");
+    EXPECT_EQ(run.output,
+              "mesh.toml:28:8: error: cannot read 'zero': larger than the limit of "
+              "256 MiB for scene and mesh files (docs/reliability.md)\n");
 }
 
 TEST_F(Reliability, ARegularFileOverTheLimitIsRefusedWithoutReadingIt) {
@@ -513,8 +520,9 @@ TEST_F(Reliability, AFifoAndStandardInputStillWork) {
 // ---- B6: OBJ numbers are exact or a located error ----
 
 TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
-    write("mesh.toml", std::string(small_scene) +
-                           "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
+    write("mesh.toml",
+          std::string(small_scene) +
+              "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
     const std::string after = " (objects[1].file at mesh.toml:28:8)\n";
     const std::pair<std::string, std::string> cases[] = {
         {"v nan 0 0", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
@@ -528,8 +536,9 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         {"v 0,5 -0,5 0,5", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
                                "': vertex x coordinate '0,5' is not a number (write the decimal "
                                "separator as a point: '.')"},
-        {"v 0 0 1e999", "mesh.obj:3:7: error: cannot read '" + std::string("mesh.obj") +
-                            "': vertex z coordinate '1e999' is beyond the range of numbers litkit reads"},
+        {"v 0 0 1e999",
+         "mesh.obj:3:7: error: cannot read '" + std::string("mesh.obj") +
+             "': vertex z coordinate '1e999' is beyond the range of numbers litkit reads"},
     };
     for (const auto& [line, expected] : cases) {
         write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + line + "\nf 1 2 3\n");
@@ -541,12 +550,14 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
 }
 
 TEST_F(Reliability, FaceIndicesOutOfRangeAreLocatedErrors) {
-    write("mesh.toml", std::string(small_scene) +
-                           "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
+    write("mesh.toml",
+          std::string(small_scene) +
+              "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
     const std::string path = "mesh.obj";
     const std::pair<std::string, std::string> cases[] = {
-        {"f 1 2 -4", path + ":4:7: error: cannot read '" + path +
-                         "': face 1 refers to vertex -4, but the file defines 3 vertices before it"},
+        {"f 1 2 -4",
+         path + ":4:7: error: cannot read '" + path +
+             "': face 1 refers to vertex -4, but the file defines 3 vertices before it"},
         {"f 1 2 3/1", path + ":4:9: error: cannot read '" + path +
                           "': face 1 refers to texture coordinate 1, but the file defines 0 "
                           "texture coordinates"},
@@ -577,22 +588,25 @@ TEST_F(Reliability, AScaleTooSmallForAFloatIsReportedAsWritten) {
     write("tiny.toml", scene_with("", "scale = 1e-50\n"));
     CommandRun run = cli("check tiny.toml");
     EXPECT_EQ(run.status, 2);
-    EXPECT_EQ(run.output, "tiny.toml:26:9: error: objects[0]: scale 1e-50 is too small (closest to "
-                          "0 a scene holds: 1.401298464324817e-45; write 0 for zero)\n");
+    EXPECT_EQ(run.output,
+              "tiny.toml:26:9: error: objects[0]: scale 1e-50 is too small (closest to "
+              "0 a scene holds: 1.401298464324817e-45; write 0 for zero)\n");
 }
 
 TEST_F(Reliability, FarAndNearAreComparedAsWritten) {
     write("same.toml", scene_with("near = 5\nfar = 5.0000001\n\n", ""));
     CommandRun same = cli("check same.toml");
     EXPECT_EQ(same.status, 2);
-    EXPECT_EQ(same.output, "same.toml:11:7: error: observer: far (5.0000001) and near (5) are the "
-                           "same 32-bit float (5); make far greater than near by more than that "
-                           "precision\n");
+    EXPECT_EQ(same.output,
+              "same.toml:11:7: error: observer: far (5.0000001) and near (5) are the "
+              "same 32-bit float (5); make far greater than near by more than that "
+              "precision\n");
     write("below.toml", scene_with("near = 5\nfar = 4.9999999\n\n", ""));
     CommandRun below = cli("check below.toml");
     EXPECT_EQ(below.status, 2);
-    EXPECT_EQ(below.output, "below.toml:11:7: error: observer: far (4.9999999) must be greater than "
-                            "near (5)\n");
+    EXPECT_EQ(below.output,
+              "below.toml:11:7: error: observer: far (4.9999999) must be greater than "
+              "near (5)\n");
     write("apart.toml", scene_with("near = 5\nfar = 5.001\n\n", ""));
     CommandRun apart = cli("check apart.toml");
     EXPECT_EQ(apart.status, 0) << apart.output;
@@ -604,17 +618,20 @@ TEST_F(Reliability, ControlCharactersInNamesAndPathsAreEscaped) {
     const std::string forged = "name = \"x\\nforged.toml:1:1: error: forged\\u0007\"\n";
     std::string scene = small_scene;
     scene.insert(scene.find("[[objects]]"), forged);  // the light
-    write("names.toml", scene + forged);             // and the sphere: a duplicate
+    write("names.toml", scene + forged);              // and the sphere: a duplicate
     CommandRun run = cli("check names.toml");
     EXPECT_EQ(run.status, 2);
-    EXPECT_EQ(run.output, "names.toml:27:8: error: objects[0]: name 'x\\nforged.toml:1:1: error: "
-                          "forged\\x07' is already used by lights[0]\n");
-    write("path.toml", std::string(small_scene) +
-                           "[[objects]]\ntype = \"mesh\"\nfile = \"no\\nsuch.obj\"\nposition = [3, 0, 0]\n");
+    EXPECT_EQ(run.output,
+              "names.toml:27:8: error: objects[0]: name 'x\\nforged.toml:1:1: error: "
+              "forged\\x07' is already used by lights[0]\n");
+    write("path.toml",
+          std::string(small_scene) +
+              "[[objects]]\ntype = \"mesh\"\nfile = \"no\\nsuch.obj\"\nposition = [3, 0, 0]\n");
     CommandRun path = cli("check path.toml");
     EXPECT_EQ(path.status, 1);
-    EXPECT_EQ(path.output, "path.toml:28:8: error: cannot read 'no\\nsuch.obj': No such file or "
-                           "directory\n");
+    EXPECT_EQ(path.output,
+              "path.toml:28:8: error: cannot read 'no\\nsuch.obj': No such file or "
+              "directory\n");
 }
 
 // ---- B8: directions and the view at any scale ----
@@ -623,8 +640,10 @@ std::string lights_with_direction(const std::string& length) {
     std::string scene = small_scene;
     scene.resize(scene.find("[[lights]]"));
     return scene + "[[lights]]\ntype = \"directional\"\ndirection = [" + length + ", -" + length +
-           ", -" + length + "]\n[[lights]]\ntype = \"spot\"\nposition = [0, 3, 3]\ndirection = [0, -" +
-           length + ", -" + length + "]\ncutoff = 40\nintensity = 5\n[[objects]]\ntype = "
+           ", -" + length +
+           "]\n[[lights]]\ntype = \"spot\"\nposition = [0, 3, 3]\ndirection = [0, -" + length +
+           ", -" + length +
+           "]\ncutoff = 40\nintensity = 5\n[[objects]]\ntype = "
            "\"sphere\"\nradius = 1\n";
 }
 
@@ -645,22 +664,26 @@ TEST_F(Reliability, AViewOfLength4e19IsNotCalledParallelToUp) {
     // small_scene scaled by 1e19: the view's squared length overflows a float.
     // (near and far scaled too: at their defaults the sphere, 3e19 away, is
     // beyond far = 1000, which check rightly warns of.)
-    write("big.toml", "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
-                      "position = [0, 0, 4e19]\nnear = 5e17\nfar = 1e22\n[lighting]\nreflection = \"phong\"\nshading = "
-                      "\"phong\"\n[[lights]]\ntype = \"directional\"\ndirection = [1, -1, -1]\n"
-                      "[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
+    write("big.toml",
+          "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
+          "position = [0, 0, 4e19]\nnear = 5e17\nfar = 1e22\n[lighting]\nreflection = "
+          "\"phong\"\nshading = "
+          "\"phong\"\n[[lights]]\ntype = \"directional\"\ndirection = [1, -1, -1]\n"
+          "[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
     const CommandRun run = cli("check big.toml");
     EXPECT_EQ(run.status, 0) << run.output;
     EXPECT_EQ(run.output, "ok\n");
     // And a truly parallel up is still refused at that scale.
-    write("parallel.toml", "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
-                           "position = [0, 0, 4e19]\nup = [0, 0, 1e-30]\n[lighting]\nreflection = "
-                           "\"phong\"\nshading = \"phong\"\n[[lights]]\ntype = \"directional\"\n"
-                           "direction = [1, -1, -1]\n[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
+    write("parallel.toml",
+          "[room]\nwidth = 1e20\nheight = 1e20\ndepth = 1e20\n[observer]\n"
+          "position = [0, 0, 4e19]\nup = [0, 0, 1e-30]\n[lighting]\nreflection = "
+          "\"phong\"\nshading = \"phong\"\n[[lights]]\ntype = \"directional\"\n"
+          "direction = [1, -1, -1]\n[[objects]]\ntype = \"sphere\"\nradius = 1e19\n");
     const CommandRun parallel = cli("check parallel.toml");
     EXPECT_EQ(parallel.status, 2);
-    EXPECT_EQ(parallel.output, "parallel.toml:7:6: error: observer: up [0, 0, 1e-30] is parallel to "
-                               "the view direction [0, 0, -4e+19]\n");
+    EXPECT_EQ(parallel.output,
+              "parallel.toml:7:6: error: observer: up [0, 0, 1e-30] is parallel to "
+              "the view direction [0, 0, -4e+19]\n");
 }
 
 // ---- C9: the hashed duplicate check and the broad phase find what the
@@ -669,8 +692,8 @@ TEST_F(Reliability, AViewOfLength4e19IsNotCalledParallelToUp) {
 TEST_F(Reliability, EveryLightAtAnEarlierLightsPlaceIsReported) {
     std::string scene = small_scene;
     for (int i = 0; i < 3; ++i)  // lights[1..3] at one place; -0 is the same place as 0
-        scene += std::string("[[lights]]\ntype = \"point\"\nposition = [") +
-                 (i == 1 ? "-0" : "0") + ", 3, -3]\nintensity = 1\n";
+        scene += std::string("[[lights]]\ntype = \"point\"\nposition = [") + (i == 1 ? "-0" : "0") +
+                 ", 3, -3]\nintensity = 1\n";
     write("lights.toml", scene);
     CommandRun run = cli("check lights.toml");
     EXPECT_EQ(run.status, 2);
@@ -689,11 +712,13 @@ TEST_F(Reliability, OverlapsAmongManyObjectsAreAllFoundInOrder) {
     // 200 spheres in a row, 2 apart (touching none), and two that overlap
     // objects 50 and 120 (placed at x = -199 + 2i).
     for (int i = 0; i < 200; ++i)
-        scene += "[[objects]]\ntype = \"sphere\"\nradius = 0.5\nsegments = 8\nrings = 4\n"
-                 "position = [" + std::to_string(-199 + 2 * i) + ", 0, -2]\n";
+        scene +=
+            "[[objects]]\ntype = \"sphere\"\nradius = 0.5\nsegments = 8\nrings = 4\n"
+            "position = [" +
+            std::to_string(-199 + 2 * i) + ", 0, -2]\n";
     for (const int x : {-199 + 2 * 120, -199 + 2 * 50})
-        scene += "[[objects]]\ntype = \"cube\"\nsize = 0.5\nposition = [" +
-                 std::to_string(x) + ".25, 0, -2]\n";
+        scene += "[[objects]]\ntype = \"cube\"\nsize = 0.5\nposition = [" + std::to_string(x) +
+                 ".25, 0, -2]\n";
     write("many.toml", scene);
     CommandRun run = cli("check many.toml");
     EXPECT_EQ(run.status, 2);
@@ -770,9 +795,10 @@ TEST_F(Reliability, RunningOutOfMemorySaysWhatWasBeingBuilt) {
     CommandRun run = shell("ulimit -v 1048576 && '" LITKIT_CLI
                            "' render tori.toml --max-triangles 1000000000 -o tori.png");
     EXPECT_EQ(run.status, 1) << run.output;
-    EXPECT_EQ(run.output, "error: out of memory while building the meshes or rendering; lower the "
-                          "objects' tessellation, the image size or --max-triangles "
-                          "(docs/reliability.md)\n");
+    EXPECT_EQ(run.output,
+              "error: out of memory while building the meshes or rendering; lower the "
+              "objects' tessellation, the image size or --max-triangles "
+              "(docs/reliability.md)\n");
     EXPECT_FALSE(fs::exists(dir / "tori.png"));
 #endif
 }
@@ -794,14 +820,16 @@ TEST_F(Reliability, TheExportedProgramRefusesToReplaceAndNeedsADisplayForAWindow
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(window.status, 1) << window.output;
-    EXPECT_EQ(window.output, "scene: error: no display to open a window on (DISPLAY and "
-                             "WAYLAND_DISPLAY are not set); run without --window to write a PNG\n");
+    EXPECT_EQ(window.output,
+              "scene: error: no display to open a window on (DISPLAY and "
+              "WAYLAND_DISPLAY are not set); run without --window to write a PNG\n");
     EXPECT_LT(seconds, 5.0);  // it used to wait forever
 
     write("scene.png", "old picture");
     const CommandRun refused = shell("program/build/scene");
     EXPECT_EQ(refused.status, 2) << refused.output;
-    EXPECT_EQ(refused.output, "scene: error: 'scene.png' already exists; pass --force to replace it\n");
+    EXPECT_EQ(refused.output,
+              "scene: error: 'scene.png' already exists; pass --force to replace it\n");
     EXPECT_EQ(read("scene.png"), "old picture");
     const CommandRun forced = shell("program/build/scene --force");
     EXPECT_EQ(forced.status, 0) << forced.output;
@@ -810,7 +838,8 @@ TEST_F(Reliability, TheExportedProgramRefusesToReplaceAndNeedsADisplayForAWindow
 }
 
 TEST(TemporaryRegistry, RemovesFilesThenFolders) {
-    const fs::path folder = fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("litkit-registry-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::ofstream(folder / "a") << "x";
     const int folder_slot = litkit::register_temporary(folder);

@@ -142,10 +142,10 @@ TEST(Render, Avx512Avx2AndPortableKernelsDrawTheSameBytes) {
         const litkit::Image c = portable.render();
         EXPECT_GT(covered_pixels(a, litkit::to_rgb8(scenes[i].output.background)), 0)
             << "scene " << i;
-        EXPECT_TRUE(a.rgb == b.rgb) << "scene " << i << ": largest difference "
-                                    << max_difference(a, b);
-        EXPECT_TRUE(a.rgb == c.rgb) << "scene " << i << ": largest difference from portable "
-                                    << max_difference(a, c);
+        EXPECT_TRUE(a.rgb == b.rgb)
+            << "scene " << i << ": largest difference " << max_difference(a, b);
+        EXPECT_TRUE(a.rgb == c.rgb)
+            << "scene " << i << ": largest difference from portable " << max_difference(a, c);
     }
 }
 
@@ -177,7 +177,9 @@ TEST(Render, PhongLightsThePointWhereThePixelsRayMeetsTheTriangle) {
             ASSERT_EQ(e.shading, litkit::Shading::Phong);
             const glm::dvec3 c0(e.corners[0]), c1(e.corners[1]), c2(e.corners[2]);
             const glm::dvec3 normal = glm::cross(c1 - c0, c2 - c0);
-            auto meet = [&](const glm::dvec3& d) { return eye + glm::dot(c0 - eye, normal) / glm::dot(d, normal) * d; };
+            auto meet = [&](const glm::dvec3& d) {
+                return eye + glm::dot(c0 - eye, normal) / glm::dot(d, normal) * d;
+            };
             const glm::dvec3 expected = meet(ray(i, j));
             const double footprint = glm::length(meet(ray(i + 1, j)) - expected) +
                                      glm::length(meet(ray(i, j + 1)) - expected);
@@ -192,7 +194,8 @@ TEST(Render, PhongLightsThePointWhereThePixelsRayMeetsTheTriangle) {
 
 TEST(Render, AKernelSetTheCpuLacksIsAnError) {
     using litkit::RenderOptions;
-    for (RenderOptions::Kernels set : {RenderOptions::Kernels::Avx2, RenderOptions::Kernels::Avx512}) {
+    for (RenderOptions::Kernels set :
+         {RenderOptions::Kernels::Avx2, RenderOptions::Kernels::Avx512}) {
         if (litkit::kernel_set_available(set)) {
             EXPECT_NO_THROW(litkit::Renderer(small(litkit::default_scene()), {.kernels = set}));
         } else {
@@ -263,7 +266,8 @@ TEST(Render, ObjectCrossingTheNearPlaneIsClippedNotDropped) {
     scene.lights[0].light = litkit::Light{litkit::AmbientLight{}};
 
     scene.observer.near = 0.05f;
-    const int whole = covered_pixels(litkit::render(scene), litkit::to_rgb8(scene.output.background));
+    const int whole =
+        covered_pixels(litkit::render(scene), litkit::to_rgb8(scene.output.background));
     scene.observer.near = 1.8f;
     const litkit::Image clipped_image = litkit::render(scene);
     const int clipped = covered_pixels(clipped_image, litkit::to_rgb8(scene.output.background));

@@ -37,14 +37,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <numbers>
-#include <map>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <iomanip>
 #include <limits>
+#include <map>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <ostream>
@@ -380,7 +380,7 @@ struct RefObject {
     litkit::Shading shading = litkit::Shading::Phong;
     litkit::Reflection reflection = litkit::Reflection::Phong;
     RefMaterial material{};
-    std::vector<dvec3> positions;       // world
+    std::vector<dvec3> positions;  // world
     // Per triangle corner (3·t + k): DD9, or docs/spec.md §9.2's weightings,
     // crease and file normals; world.
     std::vector<dvec3> corner_normals;
@@ -428,11 +428,12 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
     // Which normals (docs/spec.md §9.2): the object's, else the scene's;
     // "file" from the scene only on mesh objects; a crease of 180 is none.
     const bool is_mesh = std::holds_alternative<litkit::MeshFileShape>(object.shape);
-    litkit::Normals normals = object.normals.value_or(scene.normals.value_or(litkit::Normals::Mean));
+    litkit::Normals normals =
+        object.normals.value_or(scene.normals.value_or(litkit::Normals::Mean));
     if (!object.normals && normals == litkit::Normals::File && !is_mesh)
         normals = litkit::Normals::Mean;
-    std::optional<float> crease = object.crease_angle_degrees ? object.crease_angle_degrees
-                                                              : scene.crease_angle_degrees;
+    std::optional<float> crease =
+        object.crease_angle_degrees ? object.crease_angle_degrees : scene.crease_angle_degrees;
     if (crease && *crease >= 180.0f) crease.reset();
 
     if (normals == litkit::Normals::File) {
@@ -441,8 +442,8 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
             for (int c = 0; c < 3; ++c) {
                 const glm::vec3 n = mesh.file_normals.at(mesh.triangle_file_normals[k][c]);
                 const glm::vec3 origin(0.0f);
-                ref.corner_normals.push_back(normalize_or_zero(local_to_world(object, n) -
-                                                               local_to_world(object, origin)));
+                ref.corner_normals.push_back(
+                    normalize_or_zero(local_to_world(object, n) - local_to_world(object, origin)));
             }
     } else {
         // Each corner's weighted normal; a triangle with two corners welded
@@ -463,14 +464,18 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
                 const dvec3 cross = glm::cross(e1, e2);
                 dvec3& w = weight[3 * k + c];
                 switch (normals) {
-                    case litkit::Normals::Area: w = cross; break;
+                    case litkit::Normals::Area:
+                        w = cross;
+                        break;
                     case litkit::Normals::Angle:
                         w = std::atan2(glm::length(cross), glm::dot(e1, e2)) * ref.face_normals[k];
                         break;
                     case litkit::Normals::Max:
                         w = cross / (glm::dot(e1, e1) * glm::dot(e2, e2));
                         break;
-                    default: w = ref.face_normals[k]; break;  // mean (DD9)
+                    default:
+                        w = ref.face_normals[k];
+                        break;  // mean (DD9)
                 }
                 corners_of_group[group[t[c]]].push_back(3 * k + c);
             }
@@ -806,7 +811,8 @@ void expect_render_matches_reference(const litkit::Scene& scene, const std::stri
     ASSERT_EQ(image.rgb.size(), std::size_t(image.width) * image.height * 3);
     dump_if_asked(name, ref, image);
 
-    const Comparison result = compare(ref, image, litkit::to_rgb8(scene.output.background), scene.objects.size());
+    const Comparison result =
+        compare(ref, image, litkit::to_rgb8(scene.output.background), scene.objects.size());
     const auto ms = [](clock::duration duration) {
         return std::chrono::duration<double, std::milli>(duration).count();
     };
@@ -992,9 +998,11 @@ TEST(ReferenceRayCaster, CubeVertexNormalsArePillowedCorners) {
 constexpr std::array all_shapes{ShapeKind::Sphere, ShapeKind::Cube};
 // Every model of the family (docs/spec.md §4 and §9.1).
 constexpr std::array all_reflections{
-    litkit::Reflection::Lambert,      litkit::Reflection::HalfLambert, litkit::Reflection::Phong,
-    litkit::Reflection::BlinnPhong,   litkit::Reflection::OrenNayar,   litkit::Reflection::CookTorrance,
-    litkit::Reflection::Toon,         litkit::Reflection::Minnaert,    litkit::Reflection::Gooch};
+    litkit::Reflection::Lambert,   litkit::Reflection::HalfLambert,
+    litkit::Reflection::Phong,     litkit::Reflection::BlinnPhong,
+    litkit::Reflection::OrenNayar, litkit::Reflection::CookTorrance,
+    litkit::Reflection::Toon,      litkit::Reflection::Minnaert,
+    litkit::Reflection::Gooch};
 static_assert(all_reflections.size() == litkit::reflection_count);
 constexpr std::array all_shadings{litkit::Shading::Flat, litkit::Shading::Gouraud,
                                   litkit::Shading::Phong, litkit::Shading::Faceted};
@@ -1076,8 +1084,8 @@ TEST_P(OtherLightsMatchReference, UnderSoftSpotLight) {
     litkit::SpotLight spot = spot_across_object();
     spot.penumbra = 0.6f;
     scene.lights[1] = {"spot", make_light(spot, {255.0f, 255.0f, 255.0f}, 1.6f)};
-    expect_render_matches_reference(scene, name_of(shape) + "_blinn_phong_" + name_of(shading) +
-                                               "_soft_spot");
+    expect_render_matches_reference(
+        scene, name_of(shape) + "_blinn_phong_" + name_of(shading) + "_soft_spot");
 }
 
 // All four kinds of light at once, with gamma 2.2 and a rolled camera.

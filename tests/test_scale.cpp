@@ -74,10 +74,13 @@ litkit::Scene base_scene() { return litkit::parse_scene(scene_text, "scale.toml"
 // The test's own scaling (decimal factors, not the renderer's powers of two):
 // every length times `s`, rounded to float as a scene file would be read.
 float times(float value, double s) { return static_cast<float>(double(value) * s); }
-glm::vec3 times(const glm::vec3& v, double s) { return {times(v.x, s), times(v.y, s), times(v.z, s)}; }
+glm::vec3 times(const glm::vec3& v, double s) {
+    return {times(v.x, s), times(v.y, s), times(v.z, s)};
+}
 
 litkit::Scene scaled(litkit::Scene scene, double s) {
-    scene.room = {times(scene.room.width, s), times(scene.room.height, s), times(scene.room.depth, s)};
+    scene.room = {times(scene.room.width, s), times(scene.room.height, s),
+                  times(scene.room.depth, s)};
     scene.observer.position = times(scene.observer.position, s);
     scene.observer.look_at = times(scene.observer.look_at, s);
     scene.observer.near = times(scene.observer.near, s);
@@ -90,7 +93,8 @@ litkit::Scene scaled(litkit::Scene scene, double s) {
     }
     for (litkit::SceneObject& object : scene.objects) {
         object.position = times(object.position, s);
-        if (auto* cube = std::get_if<litkit::CubeShape>(&object.shape)) cube->size = times(cube->size, s);
+        if (auto* cube = std::get_if<litkit::CubeShape>(&object.shape))
+            cube->size = times(cube->size, s);
         if (auto* sphere = std::get_if<litkit::SphereShape>(&object.shape))
             sphere->radius = times(sphere->radius, s);
     }
@@ -104,7 +108,9 @@ std::vector<std::string> errors_of(const litkit::Scene& scene) {
     return errors;
 }
 
-std::size_t diagnostics_count(const litkit::Scene& scene) { return litkit::validate_scene(scene).size(); }
+std::size_t diagnostics_count(const litkit::Scene& scene) {
+    return litkit::validate_scene(scene).size();
+}
 
 const double factors[] = {1e-35, 1e-30, 1e-25, 1e-24, 1e-20, 1e-9, 1e9, 1e19, 1e30, 1e35};
 
@@ -116,7 +122,8 @@ TEST(Scale, AScaledSceneIsCheckedAsTheSameScene) {
     const std::size_t diagnostics = diagnostics_count(scene);
     for (const double s : factors) {
         const litkit::Scene big_or_small = scaled(scene, s);
-        EXPECT_TRUE(errors_of(big_or_small).empty()) << "scale " << s << ": " << errors_of(big_or_small).front();
+        EXPECT_TRUE(errors_of(big_or_small).empty())
+            << "scale " << s << ": " << errors_of(big_or_small).front();
         EXPECT_EQ(diagnostics_count(big_or_small), diagnostics) << "scale " << s;
     }
 }
@@ -125,7 +132,8 @@ TEST(Scale, AScaledSceneDrawsTheSamePicture) {
     const litkit::Scene scene = base_scene();
     const litkit::Image reference = litkit::render(scene);
     std::size_t covered = 0;
-    for (std::size_t i = 0; i < reference.rgb.size(); i += 3) covered += reference.rgb[i + 2] != 255;
+    for (std::size_t i = 0; i < reference.rgb.size(); i += 3)
+        covered += reference.rgb[i + 2] != 255;
     ASSERT_GT(covered, 3000u);  // both objects are in view
     for (const double s : factors) {
         const litkit::Image picture = litkit::render(scaled(scene, s));

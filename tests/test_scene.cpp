@@ -77,7 +77,7 @@ void expect_near_vec3(const glm::vec3& actual, const glm::vec3& expected) {
 
 // A fresh folder under the system's temporary folder, removed afterwards.
 class SceneFiles : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         std::random_device random;
         folder_ = fs::temp_directory_path() /
@@ -486,11 +486,12 @@ position = [0, true, 0]
 }
 
 TEST(SceneDiagnostics, VectorOfTheWrongLength) {
-    expect_single_diagnostic("[room]\nwidth = 10\nheight = 10\ndepth = 10\n"
-                             "[observer]\nposition = [0, 4]\n",
-                             6, 12,
-                             "observer: position must be an array of 3 numbers, found array of 2 "
-                             "values");
+    expect_single_diagnostic(
+        "[room]\nwidth = 10\nheight = 10\ndepth = 10\n"
+        "[observer]\nposition = [0, 4]\n",
+        6, 12,
+        "observer: position must be an array of 3 numbers, found array of 2 "
+        "values");
 }
 
 TEST(SceneDiagnostics, FloatWhereAnIntegerBelongs) {
@@ -610,12 +611,13 @@ material = { kdd = 0.5 }
 }
 
 TEST(SceneDiagnostics, KeyOfAnotherLightTypeIsAnError) {
-    expect_single_diagnostic(with_required_tables(R"([[lights]]
+    expect_single_diagnostic(
+        with_required_tables(R"([[lights]]
 type = "point"
 position = [0, 1, 0]
 cutoff = 20
 )"),
-                             10, 1, "lights[0]: key 'cutoff' does not belong to a point light (only to: spot)");
+        10, 1, "lights[0]: key 'cutoff' does not belong to a point light (only to: spot)");
 }
 
 TEST(SceneDiagnostics, KeyOfAnotherObjectTypeIsAnError) {
@@ -679,8 +681,7 @@ TEST(SceneDiagnostics, LightsThatAreNotAnArrayOfTablesAreAnError) {
     expect_single_diagnostic(with_required_tables(R"([lights]
 type = "point"
 )"),
-                             7, 1,
-                             "lights must be an array of tables ([[lights]]), found table");
+                             7, 1, "lights must be an array of tables ([[lights]]), found table");
 }
 
 TEST(SceneDiagnostics, AllProblemsAreReportedTogetherInFileOrder) {
@@ -796,8 +797,9 @@ depth = 5
 
 TEST_F(SceneFiles, RelativeMeshPathResolvesAgainstTheSceneFilesFolder) {
     // A tetrahedron: the validator reads mesh files.
-    constexpr std::string_view tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
-                                             "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    constexpr std::string_view tetrahedron =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+        "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
     write("sub/models/thing.obj", tetrahedron);
     const fs::path absolute = write("elsewhere/other.obj", tetrahedron);
     const fs::path scene_file = write("sub/scene.toml", with_required_tables(R"(
@@ -990,8 +992,9 @@ TEST(Errors, EveryLibraryErrorIsALitkitErrorWithItsPlace) {
     static_assert(std::is_base_of_v<litkit::Error, litkit::IoError>);
     static_assert(std::is_base_of_v<litkit::Error, litkit::ArgumentError>);
     try {
-        litkit::parse_scene("[room]\nwidth = 10\nheight = 10\ndepth = 10\n[observer]\nposition = [0, 0, 99]\n",
-                    "bad.toml");
+        litkit::parse_scene(
+            "[room]\nwidth = 10\nheight = 10\ndepth = 10\n[observer]\nposition = [0, 0, 99]\n",
+            "bad.toml");
         FAIL() << "no error";
     } catch (const litkit::Error& error) {
         EXPECT_EQ(error.location().to_string(), "bad.toml:6:12");

@@ -121,13 +121,15 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
         } else if (type == "point") {
             litkit::PointLight point;
             point.position = vec(e.inputs.at("light_position"));
-            if (e.inputs.count("light_attenuation")) point.attenuation = vec(e.inputs.at("light_attenuation"));
+            if (e.inputs.count("light_attenuation"))
+                point.attenuation = vec(e.inputs.at("light_attenuation"));
             light.kind = point;
         } else {
             ASSERT_EQ(type, "spot");
             spot.position = vec(e.inputs.at("light_position"));
             spot.direction = vec(e.inputs.at("light_direction"));
-            if (e.inputs.count("light_attenuation")) spot.attenuation = vec(e.inputs.at("light_attenuation"));
+            if (e.inputs.count("light_attenuation"))
+                spot.attenuation = vec(e.inputs.at("light_attenuation"));
             spot.cutoff_degrees = number(e, "light_cutoff", spot.cutoff_degrees);
             spot.exponent = number(e, "light_exponent", spot.exponent);
             spot.penumbra = number(e, "light_penumbra", spot.penumbra);
@@ -138,16 +140,19 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
         const glm::vec3 eye = vec(e.inputs.at("eye"));
         const float gamma = number(e, "gamma", 1.0f);
 
-        const litkit::ShadeTerms terms =
-            litkit::shade_terms(*reflection, material, std::span<const litkit::Light>(&light, 1), p, n, eye);
+        const litkit::ShadeTerms terms = litkit::shade_terms(
+            *reflection, material, std::span<const litkit::Light>(&light, 1), p, n, eye);
         ASSERT_EQ(terms.lights.size(), 1u);
         const litkit::LightTerms& t = terms.lights[0];
-        EXPECT_EQ(litkit::shade(*reflection, material, std::span<const litkit::Light>(&light, 1), p, n, eye),
+        EXPECT_EQ(litkit::shade(*reflection, material, std::span<const litkit::Light>(&light, 1), p,
+                                n, eye),
                   terms.total);
 
         // What each printed name is, computed from the library's values.
         std::map<std::string, std::vector<double>> computed;
-        auto put = [&](const std::string& key, const glm::vec3& v) { computed[key] = {v.x, v.y, v.z}; };
+        auto put = [&](const std::string& key, const glm::vec3& v) {
+            computed[key] = {v.x, v.y, v.z};
+        };
         put("V", glm::normalize(eye - p));
         put("L", t.to_light);
         computed["f"] = {t.factor};
@@ -176,13 +181,16 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
             const double w = c >= cos_inner ? 1.0 : u * u * (3.0 - 2.0 * u);
             computed["c"] = {c};
             computed["w"] = {w};
-            computed["s"] = {(spot.exponent == 0.0f ? 1.0 : std::pow(c, double(spot.exponent))) * w};
+            computed["s"] = {(spot.exponent == 0.0f ? 1.0 : std::pow(c, double(spot.exponent))) *
+                             w};
         }
         for (const auto& [name, value] : t.intermediates) computed[name] = {value};
         // Gooch's tones as vectors.
         if (computed.count("cool.r")) {
-            computed["cool"] = {computed["cool.r"][0], computed["cool.g"][0], computed["cool.b"][0]};
-            computed["warm"] = {computed["warm.r"][0], computed["warm.g"][0], computed["warm.b"][0]};
+            computed["cool"] = {computed["cool.r"][0], computed["cool.g"][0],
+                                computed["cool.b"][0]};
+            computed["warm"] = {computed["warm.r"][0], computed["warm.g"][0],
+                                computed["warm.b"][0]};
         }
 
         ASSERT_FALSE(e.results.empty());
@@ -194,7 +202,8 @@ TEST(SpecExamples, EveryWorkedExampleMatchesTheLibrary) {
                 if (name == "pixel")
                     EXPECT_EQ(found->second[i], printed[i]) << name << "[" << i << "]";
                 else
-                    expect_printed(found->second[i], printed[i], name + "[" + std::to_string(i) + "]");
+                    expect_printed(found->second[i], printed[i],
+                                   name + "[" + std::to_string(i) + "]");
             }
         }
         // Every example states at least the light, the terms and the result.
@@ -306,8 +315,8 @@ TEST(DocsTables, EveryImageSizeRangeIsTheLibrarysLimit) {
     EXPECT_NE(table_row("| `width` | integer |").find(range), std::string::npos);
     EXPECT_NE(table_row("| `height` | integer |").find(range), std::string::npos);
     // Any "1–N" of five digits or more in the pages users read is an image side.
-    for (const char* name : {"scene-format.md", "spec.md", "user-guide.md", "python.md",
-                             "cpp-api.md", "design.md"}) {
+    for (const char* name :
+         {"scene-format.md", "spec.md", "user-guide.md", "python.md", "cpp-api.md", "design.md"}) {
         const std::string text = read_doc(name);
         for (std::size_t at = text.find("1–"); at != std::string::npos;
              at = text.find("1–", at + 1)) {

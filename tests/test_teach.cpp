@@ -14,13 +14,13 @@
 #include <memory>
 #include <string>
 
+#include "core/json.hpp"
 #include "litkit/compare.hpp"
 #include "litkit/explain.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/turntable.hpp"
-#include "core/json.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -108,8 +108,8 @@ TEST_F(Teach, LabelsSitInAMarginAndLeaveTheTilesAlone) {
     EXPECT_EQ(labelled.image.width, labelled.left_margin + litkit::shading_count * 120);
     EXPECT_EQ(labelled.image.height, labelled.top_margin + litkit::reflection_count * 90);
     // The tiles are untouched by the labels.
-    EXPECT_EQ(crop(labelled.image, labelled.left_margin, labelled.top_margin, litkit::shading_count * 120,
-                   litkit::reflection_count * 90)
+    EXPECT_EQ(crop(labelled.image, labelled.left_margin, labelled.top_margin,
+                   litkit::shading_count * 120, litkit::reflection_count * 90)
                   .rgb,
               bare.image.rgb);
     // Text was drawn: light pixels in the margin beside each row and over each column.
@@ -365,7 +365,8 @@ void expect_every_pixel_explained(const litkit::Scene& scene, const std::string&
                 << label << " pixel " << x << "," << y;
             ++checked;
             if (!e.hit) {
-                EXPECT_EQ(e.rgb, litkit::to_rgb8(scene.output.background)) << label << " " << x << "," << y;
+                EXPECT_EQ(e.rgb, litkit::to_rgb8(scene.output.background))
+                    << label << " " << x << "," << y;
                 continue;
             }
             ++hits;

@@ -19,8 +19,9 @@ TEST(ThreadPool, EveryIndexRunsExactlyOnceOnAThreadOfThePool) {
         ASSERT_EQ(pool.size(), threads);
         // Fewer indices than threads, as many, a few more, and many; twice
         // each, so that a second job on the same pool starts afresh.
-        for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3},
-                                        std::size_t{5}, std::size_t{7}, std::size_t{68}, std::size_t{1000}}) {
+        for (const std::size_t count :
+             {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{5},
+              std::size_t{7}, std::size_t{68}, std::size_t{1000}}) {
             for (int round = 0; round < 2; ++round) {
                 const auto runs = std::make_unique<std::atomic<int>[]>(count + 1);
                 std::atomic<bool> bad_worker{false};
@@ -29,7 +30,8 @@ TEST(ThreadPool, EveryIndexRunsExactlyOnceOnAThreadOfThePool) {
                     if (worker < 0 || worker >= threads) bad_worker = true;
                 });
                 for (std::size_t i = 0; i < count; ++i)
-                    EXPECT_EQ(runs[i].load(), 1) << threads << " threads, index " << i << " of " << count;
+                    EXPECT_EQ(runs[i].load(), 1)
+                        << threads << " threads, index " << i << " of " << count;
                 EXPECT_FALSE(bad_worker.load());
             }
         }

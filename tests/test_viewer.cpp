@@ -2,8 +2,8 @@
 // in a real window on a virtual X display (Xvfb, started here), driven by
 // real input events (xdotool) and read back with xwd. Every picture is
 // compared with `litkit render` of the same settings.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -33,7 +33,7 @@ std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 // One Xvfb for the whole suite, on a display number it picks itself.
 class Display {
-public:
+  public:
     Display() {
         int fds[2];
         if (pipe(fds) != 0) return;
@@ -55,7 +55,9 @@ public:
         // Kept open: Xvfb writes the number again when it starts a new
         // server generation, and ends if it cannot.
         number_fd_ = fds[0];
-        if (n > 0) name_ = ":" + std::string(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
+        if (n > 0)
+            name_ =
+                ":" + std::string(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
     }
     ~Display() {
         if (number_fd_ >= 0) close(number_fd_);
@@ -66,7 +68,7 @@ public:
     }
     const std::string& name() const { return name_; }
 
-private:
+  private:
     pid_t pid_ = -1;
     int number_fd_ = -1;
     std::string name_;
@@ -83,11 +85,13 @@ litkit::Image read_xwd(const fs::path& file) {
     std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)), {});
     auto field = [&](int index) {
         const unsigned char* p = data.data() + 4 * index;
-        return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+        return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 |
+               p[3];
     };
     litkit::Image image;
     if (data.size() < 100 || field(11) != 32) return image;
-    const std::uint32_t header = field(0), width = field(4), height = field(5), byte_order = field(7);
+    const std::uint32_t header = field(0), width = field(4), height = field(5),
+                        byte_order = field(7);
     const std::uint32_t bytes_per_line = field(12), masks[3] = {field(14), field(15), field(16)};
     const std::size_t offset = header + 12 * std::size_t(field(19));
     if (data.size() < offset + std::size_t(bytes_per_line) * height) return image;
@@ -95,11 +99,13 @@ litkit::Image read_xwd(const fs::path& file) {
     for (std::uint32_t y = 0; y < height; ++y) {
         for (std::uint32_t x = 0; x < width; ++x) {
             const unsigned char* p = data.data() + offset + std::size_t(y) * bytes_per_line + 4 * x;
-            const std::uint32_t v = byte_order == 0 ? (p[0] | p[1] << 8 | p[2] << 16 | std::uint32_t(p[3]) << 24)
-                                                     : (std::uint32_t(p[0]) << 24 | p[1] << 16 | p[2] << 8 | p[3]);
+            const std::uint32_t v =
+                byte_order == 0 ? (p[0] | p[1] << 8 | p[2] << 16 | std::uint32_t(p[3]) << 24)
+                                : (std::uint32_t(p[0]) << 24 | p[1] << 16 | p[2] << 8 | p[3]);
             for (int c = 0; c < 3; ++c) {
                 const std::uint32_t mask = masks[c];
-                image.pixel(int(x), int(y))[c] = static_cast<std::uint8_t>((v & mask) >> __builtin_ctz(mask));
+                image.pixel(int(x), int(y))[c] =
+                    static_cast<std::uint8_t>((v & mask) >> __builtin_ctz(mask));
             }
         }
     }
@@ -109,7 +115,8 @@ litkit::Image read_xwd(const fs::path& file) {
 int largest_difference(const litkit::Image& a, const litkit::Image& b) {
     if (a.width != b.width || a.height != b.height) return 256;
     int worst = 0;
-    for (std::size_t i = 0; i < a.rgb.size(); ++i) worst = std::max(worst, std::abs(int(a.rgb[i]) - int(b.rgb[i])));
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(int(a.rgb[i]) - int(b.rgb[i])));
     return worst;
 }
 
@@ -148,11 +155,13 @@ material = { color = [200, 100, 60], shininess = 20 }
 )toml";
 
 class Viewer : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        ASSERT_FALSE(display().name().empty()) << "Xvfb did not start (scripts/install-deps.sh installs it)";
-        dir = fs::temp_directory_path() / ("litkit-viewer-" + std::to_string(getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        ASSERT_FALSE(display().name().empty())
+            << "Xvfb did not start (scripts/install-deps.sh installs it)";
+        dir = fs::temp_directory_path() /
+              ("litkit-viewer-" + std::to_string(getpid()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
         write_scene(small_scene);
@@ -182,7 +191,8 @@ protected:
             const int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
             dup2(out, 1);
             dup2(err, 2);
-            execl("/bin/sh", "sh", "-c", (std::string("exec '" LITKIT_CLI "' view ") + arguments).c_str(),
+            execl("/bin/sh", "sh", "-c",
+                  (std::string("exec '" LITKIT_CLI "' view ") + arguments).c_str(),
                   static_cast<char*>(nullptr));
             _exit(127);
         }
@@ -194,12 +204,15 @@ protected:
             const auto found = xdo("search --pid " + std::to_string(pid) + " --name 'litkit view'");
             std::istringstream lines(found.output);
             for (std::string line; window.empty() && std::getline(lines, line);)
-                if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos) window = line;
+                if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos)
+                    window = line;
             searched = found.output;
             if (window.empty()) std::this_thread::sleep_for(50ms);
         }
-        ASSERT_FALSE(window.empty()) << "no window on display [" << display().name() << "]; xdotool said:\n"
-                                     << searched << "\nstderr:\n" << text_of("stderr.txt");
+        ASSERT_FALSE(window.empty())
+            << "no window on display [" << display().name() << "]; xdotool said:\n"
+            << searched << "\nstderr:\n"
+            << text_of("stderr.txt");
     }
 
     litkit_test::CommandRun xdo(const std::string& arguments) const {
@@ -211,14 +224,16 @@ protected:
 
     litkit::Image screenshot() const {
         const fs::path file = dir / "window.xwd";
-        run_command("DISPLAY=" + display().name() + " xwd -silent -id " + window + " -out " + quoted(file));
+        run_command("DISPLAY=" + display().name() + " xwd -silent -id " + window + " -out " +
+                    quoted(file));
         return read_xwd(file);
     }
 
     // The picture `litkit render` draws of the scene with these options.
-    litkit::Image rendered(const std::string& options, const std::string& scene = "scene.toml") const {
-        const auto made = run_command("cd " + quoted(dir) + " && '" LITKIT_CLI "' render " + scene + " " +
-                                      options + " -o expected.png");
+    litkit::Image rendered(const std::string& options,
+                           const std::string& scene = "scene.toml") const {
+        const auto made = run_command("cd " + quoted(dir) + " && '" LITKIT_CLI "' render " + scene +
+                                      " " + options + " -o expected.png");
         EXPECT_EQ(made.status, 0) << made.output;
         return litkit::read_png(dir / "expected.png");
     }
@@ -269,8 +284,10 @@ TEST_F(Viewer, ShowsTheRenderPixelForPixelAndSwitchesModelsAtAKey) {
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
     EXPECT_LE(wait_for(rendered("")), 1) << "at start";
     const std::pair<const char*, const char*> keys[] = {
-        {"1", "--reflection lambert"},      {"2", "--reflection half-lambert"},
-        {"3", "--reflection phong"},        {"4", "--reflection blinn-phong"},
+        {"1", "--reflection lambert"},
+        {"2", "--reflection half-lambert"},
+        {"3", "--reflection phong"},
+        {"4", "--reflection blinn-phong"},
         {"f", "--reflection blinn-phong --shading flat"},
         {"g", "--reflection blinn-phong --shading gouraud"},
         {"p", "--reflection blinn-phong --shading phong"},
@@ -326,8 +343,9 @@ TEST_F(Viewer, ReloadsOnSaveInPlaceAndByRenameAndSurvivesABadEdit) {
     std::this_thread::sleep_for(600ms);
     EXPECT_TRUE(alive());
     EXPECT_LE(largest_difference(screenshot(), blue_picture), 1);
-    EXPECT_NE(text_of("stderr.txt").find("scene.toml:24:13: error: lights[0] 'key': intensity must be"),
-              std::string::npos)
+    EXPECT_NE(
+        text_of("stderr.txt").find("scene.toml:24:13: error: lights[0] 'key': intensity must be"),
+        std::string::npos)
         << text_of("stderr.txt");
 
     // A good save again: back to work.
@@ -370,8 +388,9 @@ TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     const litkit::Image before = screenshot();
     // Drag the gamma slider to its right end: gamma 4.
     // (Dear ImGui reads the button once a frame: hold it across frames.)
-    xdo("mousemove --window " + window + " 60 90 sleep 0.1 mousedown 1 sleep 0.1 mousemove --window " +
-        window + " 200 90 sleep 0.1 mousemove --window " + window + " 300 90 sleep 0.1 mouseup 1");
+    xdo("mousemove --window " + window +
+        " 60 90 sleep 0.1 mousedown 1 sleep 0.1 mousemove --window " + window +
+        " 200 90 sleep 0.1 mousemove --window " + window + " 300 90 sleep 0.1 mouseup 1");
     std::this_thread::sleep_for(400ms);
     const litkit::Image after = screenshot();
     // The picture beside the panel changed (the ball's right side).
@@ -398,8 +417,8 @@ TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
 
 TEST_F(Viewer, InvalidSceneIsRefusedLikeRender) {
     write_scene("[room]\nwidth = 0\n");
-    const auto refused = run_command("cd " + quoted(dir) + " && DISPLAY=" + display().name() + " '" LITKIT_CLI
-                                     "' view scene.toml");
+    const auto refused = run_command("cd " + quoted(dir) + " && DISPLAY=" + display().name() +
+                                     " '" LITKIT_CLI "' view scene.toml");
     const auto render = run_command("cd " + quoted(dir) + " && '" LITKIT_CLI "' render scene.toml");
     EXPECT_EQ(refused.status, 2);
     EXPECT_EQ(refused.output, render.output);
@@ -421,7 +440,8 @@ TEST_F(Viewer, OpenGlBackendDrawsInTheWindowsOwnContext) {
         " 120 70 mouseup 1");
     std::this_thread::sleep_for(300ms);
     key("r");
-    EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1) << "after an orbit and R";
+    EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1)
+        << "after an orbit and R";
     key("q");
     EXPECT_EQ(wait_exit(), 0);
 }

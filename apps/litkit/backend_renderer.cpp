@@ -10,7 +10,7 @@ namespace litkit_cli {
 namespace {
 
 BackendRenderer::Alternatives create(litkit::Backend backend, const litkit::Scene& scene,
-                                    const litkit::RenderOptions& options) {
+                                     const litkit::RenderOptions& options) {
     using Alternatives = BackendRenderer::Alternatives;
     switch (backend) {
         case litkit::Backend::Cpu:

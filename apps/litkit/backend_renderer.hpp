@@ -20,7 +20,7 @@ namespace litkit_cli {
 
 // litkit's own renderer, litkit::Renderer.
 class CpuBackend {
-public:
+  public:
     CpuBackend(const litkit::Scene& scene, const litkit::RenderOptions& options);
     void render_into(litkit::Image& image) { renderer_.render_into(image); }
     std::size_t triangle_count() const { return renderer_.triangle_count(); }
@@ -28,14 +28,14 @@ public:
     std::string_view setup_steps() const { return "meshes, normals, world space"; }
     std::optional<std::size_t> shaded_pixel_count() const { return renderer_.shaded_pixel_count(); }
 
-private:
+  private:
     litkit::Renderer renderer_;
 };
 
 // OpenGL: litkit::GlRenderer on a headless context, from the module
 // litkit-gl.so (gl_module.hpp), which the CLI loads only for this backend.
 class GlModuleBackend {
-public:
+  public:
     GlModuleBackend(const litkit::Scene& scene, const litkit::RenderOptions& options);
     void render_into(litkit::Image& image);
     std::size_t triangle_count() const { return renderer_->triangle_count(); }
@@ -45,7 +45,7 @@ public:
     }
     std::optional<std::size_t> shaded_pixel_count() const { return std::nullopt; }
 
-private:
+  private:
     std::unique_ptr<GlBackend> renderer_;
 };
 
@@ -53,7 +53,7 @@ private:
 // functions above, one more alternative here and its case in
 // backend_renderer.cpp's two switches.
 class BackendRenderer {
-public:
+  public:
     using Alternatives = std::variant<CpuBackend, GlModuleBackend>;
 
     BackendRenderer(litkit::Backend backend, const litkit::Scene& scene,
@@ -62,7 +62,8 @@ public:
         std::visit([&](auto& renderer) { renderer.render_into(image); }, renderer_);
     }
     std::size_t triangle_count() const {
-        return std::visit([](const auto& renderer) { return renderer.triangle_count(); }, renderer_);
+        return std::visit([](const auto& renderer) { return renderer.triangle_count(); },
+                          renderer_);
     }
     // "CPU backend: 8 threads, avx2 kernels", "OpenGL backend: ...".
     std::string description() const {
@@ -78,7 +79,7 @@ public:
                           renderer_);
     }
 
-private:
+  private:
     Alternatives renderer_;
 };
 

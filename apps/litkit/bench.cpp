@@ -65,8 +65,8 @@ int run_bench(const BenchArguments& arguments) {
 
 Command add_bench(CLI::App& app, const DefinesOptions& defines) {
     auto arguments = std::make_shared<BenchArguments>();
-    CLI::App* bench = app.add_subcommand(
-        "bench", "Render frames into memory and report the time per frame");
+    CLI::App* bench =
+        app.add_subcommand("bench", "Render frames into memory and report the time per frame");
     if (defines(*bench)) {
         add_scene_options(bench, arguments->scene);
         bench->add_option("--frames", arguments->frames, "Frames to time (after one warm-up)")

@@ -24,8 +24,9 @@ Command add_check(CLI::App& app, const DefinesOptions& defines) {
         check->add_option("SCENE", arguments->scenes, "Scene files (TOML), merged in order")
             ->required();
         add_normals_options(check, *arguments);
-        check->add_option("--max-triangles", arguments->max_triangles,
-                          "The scene-wide triangle budget (docs/reliability.md)")
+        check
+            ->add_option("--max-triangles", arguments->max_triangles,
+                         "The scene-wide triangle budget (docs/reliability.md)")
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
     }

@@ -78,13 +78,16 @@ Command add_compare(CLI::App& app, const DefinesOptions& defines) {
         "compare", "One picture of the scene under every reflection x shading pair, labelled");
     if (defines(*compare)) {
         add_scene_options(compare, arguments->scene);
-        compare->get_option("--width")->description("Width of one tile (default: the scene's halved)");
-        compare->get_option("--height")->description("Height of one tile (default: the scene's halved)");
+        compare->get_option("--width")->description(
+            "Width of one tile (default: the scene's halved)");
+        compare->get_option("--height")
+            ->description("Height of one tile (default: the scene's halved)");
         compare->add_option("-o,--output", arguments->output,
                             "Output PNG (default: the first scene's name with -compare.png)");
-        compare->add_option("--vary", arguments->vary,
-                            "both: every pair; reflection: one column (the scene's shading); "
-                            "shading: one row (the scene's reflection model)")
+        compare
+            ->add_option("--vary", arguments->vary,
+                         "both: every pair; reflection: one column (the scene's shading); "
+                         "shading: one row (the scene's reflection model)")
             ->check(CLI::IsMember({"both", "reflection", "shading"}))
             ->capture_default_str();
         compare->add_flag("--no-labels", arguments->no_labels,
@@ -92,9 +95,8 @@ Command add_compare(CLI::App& app, const DefinesOptions& defines) {
         compare->add_flag("-y,--yes", arguments->yes,
                           "Use the default models (phong / phong) where [lighting] leaves one out");
     }
-    return {.app = compare,
-            .run = [arguments] { return run_compare(*arguments); },
-            .renders = true};
+    return {
+        .app = compare, .run = [arguments] { return run_compare(*arguments); }, .renders = true};
 }
 
 }  // namespace litkit_cli

@@ -57,14 +57,21 @@ CaughtError catch_current() noexcept {
 void throw_again(const CaughtError& error) {
     using Kind = CaughtError::Kind;
     switch (error.kind) {
-    case Kind::Scene: throw litkit::SceneError(error.diagnostics, error.warnings);
-    case Kind::Io: throw litkit::IoError(error.path, error.reason, error.location, error.access);
-    case Kind::Gl: throw litkit::GlError(error.what);
-    case Kind::Argument: throw litkit::ArgumentError(error.what, error.location);
-    case Kind::Litkit: throw litkit::Error(error.what, error.location);
-    case Kind::OutOfMemory: throw std::bad_alloc();
-    case Kind::None:
-    case Kind::Other: break;
+        case Kind::Scene:
+            throw litkit::SceneError(error.diagnostics, error.warnings);
+        case Kind::Io:
+            throw litkit::IoError(error.path, error.reason, error.location, error.access);
+        case Kind::Gl:
+            throw litkit::GlError(error.what);
+        case Kind::Argument:
+            throw litkit::ArgumentError(error.what, error.location);
+        case Kind::Litkit:
+            throw litkit::Error(error.what, error.location);
+        case Kind::OutOfMemory:
+            throw std::bad_alloc();
+        case Kind::None:
+        case Kind::Other:
+            break;
     }
     throw std::runtime_error(error.what);
 }

@@ -55,8 +55,9 @@ int run_explain(const ExplainArguments& arguments) {
     if (!scene.objects.empty()) {
         std::size_t index = 0;
         if (!arguments.object.empty()) {
-            const auto named = std::find_if(scene.objects.begin(), scene.objects.end(),
-                                            [&](const litkit::SceneObject& o) { return o.name == arguments.object; });
+            const auto named = std::find_if(
+                scene.objects.begin(), scene.objects.end(),
+                [&](const litkit::SceneObject& o) { return o.name == arguments.object; });
             if (named != scene.objects.end()) {
                 index = static_cast<std::size_t>(named - scene.objects.begin());
             } else if (std::all_of(arguments.object.begin(), arguments.object.end(), ::isdigit) &&
@@ -95,8 +96,9 @@ Command add_explain(CLI::App& app, const DefinesOptions& defines) {
         explain->add_option("--normal", arguments->normal, "With --at: the surface normal NX,NY,NZ")
             ->delimiter(',')
             ->expected(3);
-        explain->add_option("--object", arguments->object,
-                            "With --at: the object (name or index) whose material to use (default: the first)");
+        explain->add_option(
+            "--object", arguments->object,
+            "With --at: the object (name or index) whose material to use (default: the first)");
         explain->add_flag("--json", arguments->json, "One JSON object instead of text");
         explain->add_flag("-y,--yes", arguments->yes,
                           "Use the default models (phong / phong) where [lighting] leaves one out");

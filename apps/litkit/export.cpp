@@ -31,7 +31,8 @@ std::string program_name_for(const std::vector<std::string>& scenes) {
     if (scenes.empty()) return "default_scene";
     std::string name = fs::path(scenes.front()).stem().string();
     for (char& c : name) {
-        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        const bool keep =
+            (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
         if (!keep) c = '_';
     }
     if (name.empty() || (name[0] >= '0' && name[0] <= '9')) name = "scene_" + name;
@@ -51,7 +52,8 @@ int run_export(const ExportArguments& arguments) {
         if (arguments.format == "glsl") {
             written = litkit::export_glsl(scene, directory, options);
         } else {
-            program = arguments.name.empty() ? program_name_for(arguments.scene.scenes) : arguments.name;
+            program =
+                arguments.name.empty() ? program_name_for(arguments.scene.scenes) : arguments.name;
             const std::string label = arguments.scene.scenes.empty()
                                           ? std::string("(litkit's default scene)")
                                           : arguments.scene.scenes.front();
@@ -88,8 +90,9 @@ Command add_export(CLI::App& app, const DefinesOptions& defines) {
             ->required();
         export_command->add_option("--name", arguments->name,
                                    "cpp: the program's name (default: the first scene's name)");
-        export_command->add_flag("-y,--yes", arguments->yes,
-                                 "Use the default models (phong / phong) where [lighting] leaves one out");
+        export_command->add_flag(
+            "-y,--yes", arguments->yes,
+            "Use the default models (phong / phong) where [lighting] leaves one out");
         export_command->add_flag("-f,--force", arguments->force, "Replace files that exist");
     }
     return {.app = export_command, .run = [arguments] { return run_export(*arguments); }};

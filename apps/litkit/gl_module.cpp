@@ -8,7 +8,7 @@ namespace litkit_cli {
 namespace {
 
 class GlRendererBackend final : public GlBackend {
-public:
+  public:
     GlRendererBackend(const litkit::Scene& scene, const litkit::RenderOptions& options)
         : renderer_(scene, options) {}
     bool render_into(litkit::Image& image, CaughtError& error) noexcept override {
@@ -17,7 +17,7 @@ public:
     std::size_t triangle_count() const noexcept override { return renderer_.triangle_count(); }
     std::string description() const noexcept override { return renderer_.description(); }
 
-private:
+  private:
     litkit::GlRenderer renderer_;
 };
 
@@ -34,6 +34,7 @@ std::unique_ptr<GlBackend> create(const litkit::Scene& scene, const litkit::Rend
 
 extern "C" __attribute__((visibility("default"))) const litkit_cli::GlModule* litkit_gl_module() {
     static constexpr litkit_cli::GlModule module{
-        litkit_cli::module_stamp<litkit_cli::GlModule, litkit::RenderOptions>(), litkit_cli::create};
+        litkit_cli::module_stamp<litkit_cli::GlModule, litkit::RenderOptions>(),
+        litkit_cli::create};
     return &module;
 }

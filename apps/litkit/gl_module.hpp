@@ -8,10 +8,10 @@
 #include <memory>
 #include <string>
 
+#include "crossing.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
-#include "crossing.hpp"
 #include "modules.hpp"
 
 namespace litkit_cli {
@@ -20,7 +20,7 @@ namespace litkit_cli {
 // of the same names). Nothing is thrown across the module's boundary
 // (crossing.hpp): what the renderer throws comes back in `error`.
 class GlBackend {
-public:
+  public:
     virtual ~GlBackend() = default;
     // False when it threw (`error` says what).
     virtual bool render_into(litkit::Image& image, CaughtError& error) noexcept = 0;
@@ -34,7 +34,8 @@ struct GlModule {
     // A renderer on a headless context of its own; null when GlRenderer's
     // constructor threw (litkit::GlError, or IoError for an unreadable mesh
     // file), which `error` then holds.
-    std::unique_ptr<GlBackend> (*create)(const litkit::Scene& scene, const litkit::RenderOptions& options,
+    std::unique_ptr<GlBackend> (*create)(const litkit::Scene& scene,
+                                         const litkit::RenderOptions& options,
                                          CaughtError& error) noexcept;
 };
 

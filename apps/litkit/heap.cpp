@@ -41,8 +41,8 @@ void use_large_pages_for_the_heap() {
     // growth (where the first large blocks go) would stay in small pages.
     const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));
     const std::uintptr_t begin = (end + huge_page - 1) & ~(huge_page - 1);
-    const bool aligned =
-        begin == end || sbrk(static_cast<std::intptr_t>(begin - end)) != reinterpret_cast<void*>(-1);
+    const bool aligned = begin == end || sbrk(static_cast<std::intptr_t>(begin - end)) !=
+                                             reinterpret_cast<void*>(-1);
     // A block larger than the free space left in the heap (a few hundred
     // KiB at start-up) forces the growth; freeing it leaves the reserve as
     // the heap's free top. Its size keeps both headers malloc writes (the

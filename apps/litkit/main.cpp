@@ -3,8 +3,8 @@
 // status they get (docs/spec.md §6: 0 success, 1 a file could not be read or written,
 // 2 invalid input or usage). Each command is a file of its own (commands.hpp);
 // this one adds them, runs the one named and maps errors to exit statuses.
-#include <CLI/CLI.hpp>
 #include <signal.h>
+#include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <new>
@@ -71,8 +71,8 @@ int main(int argc, char** argv) {
 
     // In the order `litkit --help` lists them.
     const Command commands[] = {
-        add_render(app, defines),  add_check(app, defines),   add_init(app, defines),
-        add_export(app, defines),  add_compare(app, defines), add_view(app, defines),
+        add_render(app, defines),  add_check(app, defines),     add_init(app, defines),
+        add_export(app, defines),  add_compare(app, defines),   add_view(app, defines),
         add_explain(app, defines), add_turntable(app, defines), add_bench(app, defines),
     };
 

@@ -22,12 +22,14 @@ std::vector<fs::path> module_candidates(const std::string& file_name) {
     const fs::path executable = fs::read_symlink("/proc/self/exe", error);
     if (error) return {};
     const fs::path folder = executable.parent_path();
-    return {folder / file_name, (folder / LITKIT_MODULE_DIR_FROM_BIN / file_name).lexically_normal()};
+    return {folder / file_name,
+            (folder / LITKIT_MODULE_DIR_FROM_BIN / file_name).lexically_normal()};
 }
 
 }  // namespace
 
-OpenedModule open_module_file(const std::string& file_name, const char* entry, const std::string& purpose) {
+OpenedModule open_module_file(const std::string& file_name, const char* entry,
+                              const std::string& purpose) {
     const std::vector<fs::path> candidates = module_candidates(file_name);
     if (candidates.empty()) {
         throw ModuleError{purpose + " cannot find its module " + file_name +
@@ -38,7 +40,8 @@ OpenedModule open_module_file(const std::string& file_name, const char* entry, c
                                     [&](const fs::path& path) { return fs::exists(path, error); });
     if (found == candidates.end()) {
         std::string looked;
-        for (const fs::path& path : candidates) looked += (looked.empty() ? "" : ", ") + path.string();
+        for (const fs::path& path : candidates)
+            looked += (looked.empty() ? "" : ", ") + path.string();
         throw ModuleError{purpose + " needs its module " + file_name +
                           ", which is not installed with this litkit (looked for " + looked +
                           "); build litkit again, or install it again"};

@@ -47,14 +47,16 @@ struct OpenedModule {
 // installed library folder (lib/litkit, relative to bin/), loads it and its
 // libraries and looks up `entry`. `purpose` words the errors ("litkit
 // view"). Throws ModuleError. A module stays loaded to the end of the process.
-OpenedModule open_module_file(const std::string& file_name, const char* entry, const std::string& purpose);
+OpenedModule open_module_file(const std::string& file_name, const char* entry,
+                              const std::string& purpose);
 
 [[noreturn]] void refuse_foreign_module(const std::string& path);
 
 // The interface a module's entry function returns (its first member is a
 // ModuleStamp), checked against the stamp this CLI was built with.
 template <class Interface, class Options>
-const Interface& open_module(const std::string& file_name, const char* entry, const std::string& purpose) {
+const Interface& open_module(const std::string& file_name, const char* entry,
+                             const std::string& purpose) {
     const OpenedModule opened = open_module_file(file_name, entry, purpose);
     const auto* interface = reinterpret_cast<const Interface* (*)()>(opened.entry)();
     if (!interface || !(interface->stamp == module_stamp<Interface, Options>()))

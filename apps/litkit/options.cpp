@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "backend_renderer.hpp"
-#include "usage_error.hpp"
 #include "litkit/lighting.hpp"
 #include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/render.hpp"
 #include "litkit/validate.hpp"
+#include "usage_error.hpp"
 
 namespace litkit_cli {
 
@@ -80,12 +80,14 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("--shading", arguments.shading, "Shading model")
         ->check(CLI::IsMember(names_of(litkit::shading_names)));
     add_normals_options(command, arguments);
-    command->add_option("--max-triangles", arguments.max_triangles,
-                        "The scene-wide triangle budget (docs/reliability.md)")
+    command
+        ->add_option("--max-triangles", arguments.max_triangles,
+                     "The scene-wide triangle budget (docs/reliability.md)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     if (!rendering) return;
-    command->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
+    command
+        ->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, litkit::max_render_threads));
     // litkit::backends(): every backend with what it is.
     std::vector<std::string> backends;
@@ -122,8 +124,10 @@ litkit::Scene load(const SceneArguments& arguments) {
         // normal at each face corner; validating again reports one that
         // lacks it at its line, before any rendering (warnings were shown).
         std::vector<litkit::Diagnostic> errors;
-        for (litkit::Diagnostic& diagnostic : litkit::validate_scene(scene, arguments.max_triangles))
-            if (diagnostic.severity == litkit::Severity::Error) errors.push_back(std::move(diagnostic));
+        for (litkit::Diagnostic& diagnostic :
+             litkit::validate_scene(scene, arguments.max_triangles))
+            if (diagnostic.severity == litkit::Severity::Error)
+                errors.push_back(std::move(diagnostic));
         if (!errors.empty()) throw litkit::SceneError(std::move(errors));
     }
     return scene;
@@ -132,8 +136,8 @@ litkit::Scene load(const SceneArguments& arguments) {
 void settle_missing_lighting(litkit::Scene& scene, bool yes) {
     if (scene.reflection && scene.shading) return;
     std::string missing = !scene.reflection && !scene.shading ? "shading/reflection model"
-                          : !scene.reflection                ? "reflection model"
-                                                             : "shading model";
+                          : !scene.reflection                 ? "reflection model"
+                                                              : "shading model";
     bool use_defaults = yes;
     if (!use_defaults && ::isatty(STDIN_FILENO)) {
         std::cerr << "Scene has no " << missing << ". Use the defaults (phong / phong)? [Y/n] "

@@ -24,7 +24,7 @@ struct SceneArguments {
     std::optional<std::string> shading;
     std::optional<std::string> normals;
     std::optional<float> crease_angle;
-    std::optional<int> threads;  // CPU backend only; none: one per core
+    std::optional<int> threads;   // CPU backend only; none: one per core
     std::string backend = "cpu";  // a name of litkit::backends(); backend_id() reads it
     std::uint64_t max_triangles = litkit::default_triangle_budget;  // docs/reliability.md
 

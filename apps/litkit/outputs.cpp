@@ -5,8 +5,8 @@
 
 #include <variant>
 
-#include "usage_error.hpp"
 #include "core/files.hpp"
+#include "usage_error.hpp"
 
 namespace litkit_cli {
 

@@ -25,7 +25,8 @@ void write_png_output(const litkit::Image& image, const std::filesystem::path& o
 std::filesystem::path default_output(const std::vector<std::string>& scenes);
 
 // A scene file's stem with a suffix: "scene.toml" → "scene-compare.png".
-std::filesystem::path output_beside(const std::vector<std::string>& scenes, const std::string& suffix);
+std::filesystem::path output_beside(const std::vector<std::string>& scenes,
+                                    const std::string& suffix);
 
 // The output must not be one of the inputs, the scene `files` or the mesh
 // files they name (docs/spec.md §6): a UsageError if it is.

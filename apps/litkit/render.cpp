@@ -43,10 +43,11 @@ int run_render(const RenderArguments& arguments) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The message names the backend unless it is the default one.
-    (is_standard_output(output) ? std::cerr : std::cout) << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height
-              << ", " << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
-              << " ms" << (backend != litkit::default_backend ? "; " + renderer.description() : "")
-              << ")\n";
+    (is_standard_output(output) ? std::cerr : std::cout)
+        << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height << ", "
+        << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
+        << " ms" << (backend != litkit::default_backend ? "; " + renderer.description() : "")
+        << ")\n";
     // Done: the picture is in its file and the message out. The process
     // ends here, without taking the renderer, its threads and its memory
     // apart (a one-shot run's last 0.3 ms; the system frees it all at once).
@@ -63,8 +64,9 @@ Command add_render(CLI::App& app, const DefinesOptions& defines) {
     CLI::App* render = app.add_subcommand("render", "Render a scene (or the default scene) to PNG");
     if (defines(*render)) {
         add_scene_options(render, arguments->scene);
-        render->add_option("-o,--output", arguments->output,
-                           "Output PNG (default: the first scene's name with .png; -: standard output)");
+        render->add_option(
+            "-o,--output", arguments->output,
+            "Output PNG (default: the first scene's name with .png; -: standard output)");
         render->add_flag("-y,--yes", arguments->yes,
                          "Use the default models (phong / phong) where [lighting] leaves one out");
     }

@@ -40,8 +40,8 @@ void show_progress(int done, int total, double seconds) {
     const double left = rate > 0.0 ? (total - done) / rate : 0.0;
     std::fprintf(stderr, "\r[%s%s] %d/%d frames, %.1f frames/s, %.0f s left ",
                  std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(bar - filled), '.').c_str(), done, total, rate,
-                 left);
+                 std::string(static_cast<std::size_t>(bar - filled), '.').c_str(), done, total,
+                 rate, left);
     std::fflush(stderr);
 }
 
@@ -101,17 +101,19 @@ Command add_turntable(CLI::App& app, const DefinesOptions& defines) {
         "turntable", "The observer circles look_at once: an animated GIF, or PNG frames in DIR/");
     if (defines(*turntable)) {
         add_scene_options(turntable, arguments->scene);
-        turntable->add_option("-o,--output", arguments->output,
-                              "spin.gif, or DIR/ for numbered PNGs (default: the first scene's name "
-                              "with .gif)");
+        turntable->add_option(
+            "-o,--output", arguments->output,
+            "spin.gif, or DIR/ for numbered PNGs (default: the first scene's name "
+            "with .gif)");
         turntable->add_option("--frames", arguments->frames, "Frames in one turn")
             ->check(CLI::Range(1, 10000))
             ->capture_default_str();
         turntable->add_option("--delay", arguments->delay_ms, "GIF: milliseconds per frame")
             ->check(CLI::Range(10, 10000))
             ->capture_default_str();
-        turntable->add_flag("-y,--yes", arguments->yes,
-                            "Use the default models (phong / phong) where [lighting] leaves one out");
+        turntable->add_flag(
+            "-y,--yes", arguments->yes,
+            "Use the default models (phong / phong) where [lighting] leaves one out");
     }
     return {.app = turntable,
             .run = [arguments] { return run_turntable(*arguments); },

@@ -22,13 +22,16 @@ std::vector<const CLI::App*> commands(const CLI::App& app) {
 std::string short_usage(const CLI::App& app) {
     std::string text = "usage: litkit COMMAND [options]\n\ncommands:\n";
     std::size_t widest = 0;
-    for (const CLI::App* command : commands(app)) widest = std::max(widest, command->get_name().size());
+    for (const CLI::App* command : commands(app))
+        widest = std::max(widest, command->get_name().size());
     for (const CLI::App* command : commands(app)) {
-        text += "  " + command->get_name() + std::string(widest + 2 - command->get_name().size(), ' ') +
+        text += "  " + command->get_name() +
+                std::string(widest + 2 - command->get_name().size(), ' ') +
                 command->get_description() + "\n";
     }
-    return text + "\n'litkit render' alone draws the default scene; 'litkit COMMAND --help' lists a "
-                  "command's options.\nRun with --help for more information.\n";
+    return text +
+           "\n'litkit render' alone draws the default scene; 'litkit COMMAND --help' lists a "
+           "command's options.\nRun with --help for more information.\n";
 }
 
 std::optional<int> check_command(const CLI::App& app, int argc, char** argv) {

@@ -28,7 +28,8 @@ int run_view(const ViewArguments& arguments) {
     settle_missing_lighting(scene, arguments.yes);
     ViewerOptions options;
     options.files.assign(arguments.scene.scenes.begin(), arguments.scene.scenes.end());
-    options.title = arguments.scene.scenes.empty() ? "default scene" : arguments.scene.scenes.front();
+    options.title =
+        arguments.scene.scenes.empty() ? "default scene" : arguments.scene.scenes.front();
     options.backend = arguments.scene.backend_id();
     options.threads = arguments.scene.threads.value_or(0);
     options.show_panel = !arguments.no_ui;

@@ -52,11 +52,11 @@
 #include <utility>
 #include <vector>
 
+#include "heap.hpp"
 #include "litkit/error.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
-#include "heap.hpp"
 #include "peer.hpp"
 #include "picture_agreement.hpp"
 
@@ -76,7 +76,8 @@ struct Context {
 
     Context() {
         if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
-            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                               nullptr);
         if (display == EGL_NO_DISPLAY) display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
         EGLint major = 0, minor = 0;
         if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
@@ -88,11 +89,16 @@ struct Context {
         EGLint count = 0;
         if (!eglChooseConfig(display, config_attributes, &config, 1, &count) || count < 1)
             throw std::runtime_error("no EGL configuration for desktop OpenGL");
-        const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+        const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                             3,
+                                             EGL_CONTEXT_MINOR_VERSION,
+                                             3,
                                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                             EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                             EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                             EGL_NONE};
         context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
-        if (context == EGL_NO_CONTEXT) throw std::runtime_error("cannot create an OpenGL 3.3 core context");
+        if (context == EGL_NO_CONTEXT)
+            throw std::runtime_error("cannot create an OpenGL 3.3 core context");
         if (!epoxy_has_egl_extension(display, "EGL_KHR_surfaceless_context")) {
             const EGLint pbuffer_attributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
             surface = eglCreatePbufferSurface(display, config, pbuffer_attributes);
@@ -156,8 +162,10 @@ struct Object {
     litkit::Material material;
 };
 
-Object upload(const litkit::SceneObject& object, const litkit::Scene& scene, litkit::Shading shading) {
-    const litkit::WorldMesh mesh = litkit::world_mesh(object, litkit::normal_options(scene, object));
+Object upload(const litkit::SceneObject& object, const litkit::Scene& scene,
+              litkit::Shading shading) {
+    const litkit::WorldMesh mesh =
+        litkit::world_mesh(object, litkit::normal_options(scene, object));
     std::vector<float> vertices;
     std::vector<std::uint32_t> indices;
     const auto put = [&](const glm::vec3& v) { vertices.insert(vertices.end(), {v.x, v.y, v.z}); };
@@ -175,7 +183,8 @@ Object upload(const litkit::SceneObject& object, const litkit::Scene& scene, lit
     } else {
         vertices.reserve(mesh.triangles.size() * 27);
         for (const auto& t : mesh.triangles) {
-            const glm::vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+            const glm::vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]],
+                            &c = mesh.positions[t[2]];
             const glm::vec3 cross = glm::cross(b - a, c - a);
             const float length = glm::length(cross);
             const glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f);
@@ -193,8 +202,8 @@ Object upload(const litkit::SceneObject& object, const litkit::Scene& scene, lit
     glBindVertexArray(gpu.vertex_array);
     glGenBuffers(2, gpu.buffers);
     glBindBuffer(GL_ARRAY_BUFFER, gpu.buffers[0]);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
+                 vertices.data(), GL_STATIC_DRAW);
     for (int attribute = 0; attribute < floats / 3; ++attribute) {
         glVertexAttribPointer(attribute, 3, GL_FLOAT, GL_FALSE, floats * sizeof(float),
                               reinterpret_cast<const void*>(attribute * 3 * sizeof(float)));
@@ -202,7 +211,8 @@ Object upload(const litkit::SceneObject& object, const litkit::Scene& scene, lit
     }
     if (gpu.indexed) {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.buffers[1]);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                      indices.data(), GL_STATIC_DRAW);
     }
     glBindVertexArray(0);
@@ -216,7 +226,8 @@ struct Peer {
     glm::vec3 background;
 
     explicit Peer(const litkit::Scene& scene)
-        : width(scene.output.width), height(scene.output.height),
+        : width(scene.output.width),
+          height(scene.output.height),
           background(scene.output.background) {  // 0-1 per channel, as every colour
         std::vector<litkit::Light> scene_lights;
         for (const litkit::SceneLight& light : scene.lights) scene_lights.push_back(light.light);
@@ -224,7 +235,8 @@ struct Peer {
         const bool gamma = scene.output.gamma != 1.0f;
         const litkit::Observer& o = scene.observer;
         const glm::mat4 view_projection =
-            glm::perspective(glm::radians(o.fov_degrees), float(width) / float(height), o.near, o.far) *
+            glm::perspective(glm::radians(o.fov_degrees), float(width) / float(height), o.near,
+                             o.far) *
             glm::lookAt(o.position, o.look_at, o.up);
         glm::vec3 ambient(0.0f);
         for (const peer::PeerLight& light : lights)
@@ -239,8 +251,11 @@ struct Peer {
                 program = program_from(peer::shaders_for(reflection, shading, lights, gamma));
                 // What stays the same for every frame, set once.
                 glUseProgram(program);
-                const auto at = [&](const std::string& name) { return glGetUniformLocation(program, name.c_str()); };
-                glUniformMatrix4fv(at("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+                const auto at = [&](const std::string& name) {
+                    return glGetUniformLocation(program, name.c_str());
+                };
+                glUniformMatrix4fv(at("u_view_projection"), 1, GL_FALSE,
+                                   glm::value_ptr(view_projection));
                 glUniform3fv(at("u_eye"), 1, glm::value_ptr(o.position));
                 glUniform3fv(at("u_ambient"), 1, glm::value_ptr(ambient));
                 if (gamma) glUniform1f(at("u_inv_gamma"), 1.0f / scene.output.gamma);
@@ -264,10 +279,12 @@ struct Peer {
         glGenRenderbuffers(2, renderbuffers);
         glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[0]);
         glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  renderbuffers[0]);
         glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[1]);
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers[1]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  renderbuffers[1]);
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw std::runtime_error("the framebuffer is incomplete");
         glViewport(0, 0, width, height);
@@ -282,7 +299,9 @@ struct Peer {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         for (const Object& object : objects) {
             glUseProgram(object.program);
-            const auto at = [&](const char* name) { return glGetUniformLocation(object.program, name); };
+            const auto at = [&](const char* name) {
+                return glGetUniformLocation(object.program, name);
+            };
             glUniform3fv(at("u_color"), 1, glm::value_ptr(object.material.color));
             glUniform1f(at("u_ka"), object.material.ka);
             glUniform1f(at("u_kd"), object.material.kd);
@@ -304,7 +323,8 @@ struct Peer {
     litkit::Image picture(const std::vector<std::uint8_t>& rgba) const {
         litkit::Image image(width, height);
         for (int y = 0; y < height; ++y) {
-            const std::uint8_t* from = rgba.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
+            const std::uint8_t* from =
+                rgba.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
             std::uint8_t* to = image.rgb.data() + static_cast<std::size_t>(y) * width * 3;
             for (int x = 0; x < width; ++x)
                 for (int c = 0; c < 3; ++c) to[3 * x + c] = from[4 * x + c];
@@ -329,16 +349,26 @@ Arguments parse(int argc, char** argv) {
             if (i + 1 >= argc) throw std::runtime_error(word + " needs a value");
             return argv[++i];
         };
-        if (word == "--width") a.width = std::stoi(value());
-        else if (word == "--height") a.height = std::stoi(value());
-        else if (word == "--frames") a.frames = std::stoi(value());
-        else if (word == "--reflection") a.reflection = value();
-        else if (word == "--shading") a.shading = value();
-        else if (word == "-o") a.output = value();
-        else if (word == "--check") a.check = true;
-        else if (!word.empty() && word[0] == '-') throw std::runtime_error("unknown option " + word);
-        else if (a.scene.empty()) a.scene = word;
-        else throw std::runtime_error("one scene file only");
+        if (word == "--width")
+            a.width = std::stoi(value());
+        else if (word == "--height")
+            a.height = std::stoi(value());
+        else if (word == "--frames")
+            a.frames = std::stoi(value());
+        else if (word == "--reflection")
+            a.reflection = value();
+        else if (word == "--shading")
+            a.shading = value();
+        else if (word == "-o")
+            a.output = value();
+        else if (word == "--check")
+            a.check = true;
+        else if (!word.empty() && word[0] == '-')
+            throw std::runtime_error("unknown option " + word);
+        else if (a.scene.empty())
+            a.scene = word;
+        else
+            throw std::runtime_error("one scene file only");
     }
     if (a.frames < 1) throw std::runtime_error("--frames must be at least 1");
     return a;
@@ -382,10 +412,11 @@ int run(const Arguments& a) {
             litkit_test::agreement(own, theirs, litkit_test::labels(scene));
         const bool ok = agreement.fraction() >= litkit_test::required_fraction &&
                         agreement.background_differing == 0;
-        std::printf("%s: %.3f%% of %zu interior pixels within 2/255 of litkit's (largest %d/255), "
-                    "%.3f%% of all pixels, %zu background pixels differ\n",
-                    ok ? "agree" : "DISAGREE", 100.0 * agreement.fraction(), agreement.counted,
-                    agreement.worst, 100.0 * agreement.fraction_of_all(), agreement.background_differing);
+        std::printf(
+            "%s: %.3f%% of %zu interior pixels within 2/255 of litkit's (largest %d/255), "
+            "%.3f%% of all pixels, %zu background pixels differ\n",
+            ok ? "agree" : "DISAGREE", 100.0 * agreement.fraction(), agreement.counted,
+            agreement.worst, 100.0 * agreement.fraction_of_all(), agreement.background_differing);
         return ok ? 0 : 1;
     }
 
@@ -400,7 +431,8 @@ int run(const Arguments& a) {
     const std::size_t n = frame_ms.size();
     const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
     std::size_t triangles = 0;
-    for (const Object& object : peer.objects) triangles += static_cast<std::size_t>(object.count) / 3;
+    for (const Object& object : peer.objects)
+        triangles += static_cast<std::size_t>(object.count) / 3;
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf("scene: %s\n", a.scene.empty() ? "(default)" : a.scene.c_str());
@@ -408,7 +440,8 @@ int run(const Arguments& a) {
                 reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                 reinterpret_cast<const char*>(glGetString(GL_VERSION)));
     std::printf("image: %dx%d, %zu triangles\n", peer.width, peer.height, triangles);
-    std::printf("setup: %.3f ms (meshes, normals, world space, context, shaders, upload)\n", setup_ms);
+    std::printf("setup: %.3f ms (meshes, normals, world space, context, shaders, upload)\n",
+                setup_ms);
     std::printf("peak_rss_mib=%.1f\n", usage.ru_maxrss / 1024.0);
     std::printf("frames: %d, median %.3f ms, min %.3f ms\n", a.frames, median, frame_ms.front());
     std::printf("median_frame_ms=%.3f fps=%.1f\n", median, 1000.0 / median);

@@ -28,7 +28,8 @@ glm::vec3 unit(const glm::vec3& v) {
 
 // k_d·D·C + k_s·S for unit N, L, V: what f·I_L multiplies.
 std::string reflectance_function(litkit::Reflection reflection) {
-    const std::string head = "vec3 reflectance(vec3 N, vec3 L, vec3 V) {\n    float nl = dot(N, L);\n";
+    const std::string head =
+        "vec3 reflectance(vec3 N, vec3 L, vec3 V) {\n    float nl = dot(N, L);\n";
     switch (reflection) {
         case litkit::Reflection::Lambert:
             return head + "    return (u_kd * max(nl, 0.0)) * u_color;\n}\n";
@@ -48,9 +49,10 @@ std::string reflectance_function(litkit::Reflection reflection) {
                    "    float s = (nl > 0.0 && nh > 0.0) ? pow(nh, u_shininess) : 0.0;\n"
                    "    return (u_kd * max(nl, 0.0)) * u_color + u_ks * s;\n}\n";
         default:
-            throw std::runtime_error("the plain OpenGL peer writes only lambert, half-lambert, "
-                                     "phong and blinn-phong, not " +
-                                     std::string(litkit::to_string(reflection)));
+            throw std::runtime_error(
+                "the plain OpenGL peer writes only lambert, half-lambert, "
+                "phong and blinn-phong, not " +
+                std::string(litkit::to_string(reflection)));
     }
 }
 
@@ -61,7 +63,8 @@ std::string lighting(litkit::Reflection reflection, const std::vector<PeerLight>
         "uniform vec3 u_color;\n"
         "uniform float u_ka, u_kd, u_ks, u_shininess;\n"
         "uniform vec3 u_ambient;  // the sum of the ambient lights' radiance\n";
-    std::string body = "vec3 shade(vec3 p, vec3 N, vec3 V) {\n    vec3 I = (u_ka * u_ambient) * u_color;\n";
+    std::string body =
+        "vec3 shade(vec3 p, vec3 N, vec3 V) {\n    vec3 I = (u_ka * u_ambient) * u_color;\n";
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const std::string at = "u_light" + std::to_string(i) + "_";
         switch (lights[i].kind) {
@@ -75,28 +78,43 @@ std::string lighting(litkit::Reflection reflection, const std::vector<PeerLight>
             case PeerLight::Spot: {
                 declarations +=
                     "uniform vec3 " + at + "radiance, " + at + "position, " + at + "attenuation;\n";
-                body += "    {\n"
-                        "        vec3 d = " + at + "position - p;\n"
-                        "        float r = length(d);\n"
-                        "        vec3 L = d / r;\n"
-                        "        float f = 1.0 / (" + at + "attenuation.x + " + at +
-                        "attenuation.y * r + " + at + "attenuation.z * r * r);\n";
+                body +=
+                    "    {\n"
+                    "        vec3 d = " +
+                    at +
+                    "position - p;\n"
+                    "        float r = length(d);\n"
+                    "        vec3 L = d / r;\n"
+                    "        float f = 1.0 / (" +
+                    at + "attenuation.x + " + at + "attenuation.y * r + " + at +
+                    "attenuation.z * r * r);\n";
                 if (lights[i].kind == PeerLight::Spot) {
                     declarations += "uniform vec3 " + at + "direction;\n" + "uniform float " + at +
                                     "cos_cutoff, " + at + "cos_inner, " + at + "exponent;\n";
-                    body += "        float c = -dot(L, " + at + "direction);\n"
-                            "        float width = " + at + "cos_inner - " + at + "cos_cutoff;\n"
-                            "        float t = (c - " + at + "cos_cutoff) / (width > 0.0 ? width : 1.0);\n"
-                            "        float w = c >= " + at + "cos_inner - 1e-6 ? 1.0 : t * t * (3.0 - 2.0 * t);\n"
-                            "        float e = " + at + "exponent == 0.0 ? 1.0 : pow(max(c, 0.0), " + at + "exponent);\n"
-                            "        f *= c >= " + at + "cos_cutoff - 1e-6 ? e * w : 0.0;\n";
+                    body += "        float c = -dot(L, " + at +
+                            "direction);\n"
+                            "        float width = " +
+                            at + "cos_inner - " + at +
+                            "cos_cutoff;\n"
+                            "        float t = (c - " +
+                            at +
+                            "cos_cutoff) / (width > 0.0 ? width : 1.0);\n"
+                            "        float w = c >= " +
+                            at +
+                            "cos_inner - 1e-6 ? 1.0 : t * t * (3.0 - 2.0 * t);\n"
+                            "        float e = " +
+                            at + "exponent == 0.0 ? 1.0 : pow(max(c, 0.0), " + at +
+                            "exponent);\n"
+                            "        f *= c >= " +
+                            at + "cos_cutoff - 1e-6 ? e * w : 0.0;\n";
                 }
                 body += "        I += f * " + at + "radiance * reflectance(N, L, V);\n    }\n";
                 break;
             }
         }
     }
-    return declarations + "\n" + reflectance_function(reflection) + "\n" + body + "    return I;\n}\n";
+    return declarations + "\n" + reflectance_function(reflection) + "\n" + body +
+           "    return I;\n}\n";
 }
 
 const char* const version = "#version 330 core\n";
@@ -142,7 +160,8 @@ ShaderSources shaders_for(litkit::Reflection reflection, litkit::Shading shading
     // The fragment's colour: GL clamps it to [0, 1] and rounds it into RGBA8.
     const std::string out_color =
         gamma ? "uniform float u_inv_gamma;\nout vec4 frag_color;\n"
-                "void put(vec3 c) { frag_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(u_inv_gamma)), 1.0); }\n"
+                "void put(vec3 c) { frag_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(u_inv_gamma)), "
+                "1.0); }\n"
               : "out vec4 frag_color;\nvoid put(vec3 c) { frag_color = vec4(c, 1.0); }\n";
     const std::string inputs =
         "layout(location = 0) in vec3 a_position;\n"
@@ -179,7 +198,8 @@ ShaderSources shaders_for(litkit::Reflection reflection, litkit::Shading shading
             s.fragment = version + std::string("in vec3 v_position;\nin vec3 v_normal;\n") + lit +
                          out_color +
                          "void main() {\n"
-                         "    put(shade(v_position, normalize(v_normal), normalize(u_eye - v_position)));\n}\n";
+                         "    put(shade(v_position, normalize(v_normal), normalize(u_eye - "
+                         "v_position)));\n}\n";
             break;
         case litkit::Shading::Faceted:
             s.vertex = version + inputs +

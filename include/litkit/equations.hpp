@@ -54,7 +54,8 @@ using std::sqrt;
 /// templates below find it before xsimd's own pow; defined in
 /// src/cpu/shade_kernel_impl.hpp, where the kernels are compiled.
 template <class Arch>
-xsimd::batch<float, Arch> pow(const xsimd::batch<float, Arch>& base, const xsimd::batch<float, Arch>& exponent);
+xsimd::batch<float, Arch> pow(const xsimd::batch<float, Arch>& base,
+                              const xsimd::batch<float, Arch>& exponent);
 
 /// A 3-vector of T: a point, direction or RGB colour, one per lane of a batch.
 template <class T>
@@ -153,7 +154,8 @@ struct Incidence {
 /// (k_c, k_l, k_q), `distance` is d in world units.
 template <class T>
 T distance_attenuation(const Vec3<T>& coefficients, const T& distance) {
-    return T(1) / (coefficients.x + coefficients.y * distance + coefficients.z * distance * distance);
+    return T(1) /
+           (coefficients.x + coefficients.y * distance + coefficients.z * distance * distance);
 }
 
 /// Directional light: L = −normalize(direction), f = 1. `travel_unit` is the
@@ -454,10 +456,12 @@ Vec3<T> shade_point(std::span<const PreparedLight> lights, const MaterialT<T>& m
                 incidence = directional_incidence(splat<T>(light.direction));
                 break;
             case PreparedLight::Kind::Point:
-                incidence = point_incidence(splat<T>(light.position), splat<T>(light.attenuation), p);
+                incidence =
+                    point_incidence(splat<T>(light.position), splat<T>(light.attenuation), p);
                 break;
             case PreparedLight::Kind::Spot:
-                incidence = point_incidence(splat<T>(light.position), splat<T>(light.attenuation), p);
+                incidence =
+                    point_incidence(splat<T>(light.position), splat<T>(light.attenuation), p);
                 incidence.factor =
                     incidence.factor * spot_factor(incidence.to_light, splat<T>(light.direction),
                                                    T(light.cos_cutoff), T(light.cos_inner),

@@ -56,20 +56,20 @@ struct Diagnostic {
 /// that `litkit check` prints, and location() says where, when there is a
 /// place ("scene.toml:14:12"; empty otherwise).
 class Error : public std::runtime_error {
-public:
+  public:
     /// `what` is the whole diagnostic, location included when there is one.
     explicit Error(const std::string& what, FileLoc location = {});
     /// Where the error is; a default FileLoc when it has no place.
     const FileLoc& location() const noexcept { return location_; }
 
-private:
+  private:
     FileLoc location_;
 };
 
 /// A function of the library was called with arguments outside its contract
 /// (a sphere of radius 0, a pixel outside the image, a light capacity of 0).
 class ArgumentError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
@@ -77,7 +77,7 @@ public:
 /// rule. Holds every problem found, not just the first; location() is the
 /// first one's. CLI exit status 2.
 class SceneError : public Error {
-public:
+  public:
     /// `warnings` are those found alongside the errors, kept apart so that
     /// diagnostics() holds exactly the errors.
     explicit SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings = {});
@@ -86,7 +86,7 @@ public:
     /// The warnings found alongside the errors.
     const std::vector<Diagnostic>& warnings() const noexcept { return warnings_; }
 
-private:
+  private:
     std::vector<Diagnostic> diagnostics_;
     std::vector<Diagnostic> warnings_;
 };
@@ -95,7 +95,7 @@ private:
 /// TOML, disk full). CLI exit status 1. `location` is set when the failure has
 /// a place, such as a TOML syntax error.
 class IoError : public Error {
-public:
+  public:
     /// Which way the failed access went; it words the message.
     enum class Access {
         Read,  ///< "error: cannot read 'path': reason"
@@ -111,7 +111,7 @@ public:
     /// Reading or writing.
     Access access() const noexcept { return access_; }
 
-private:
+  private:
     std::string path_;
     std::string reason_;
     Access access_;

@@ -67,7 +67,7 @@ PixelExplanation explain_pixel(const Scene& scene, int x, int y, const RenderOpt
 /// renderer (meshes, normals, threads) built once, not once a pixel. Each
 /// explain() draws again, as explain_pixel does (Renderer::probe).
 class PixelExplainer {
-public:
+  public:
     /// The preconditions and errors of Renderer's constructor. The scene is
     /// copied: later changes to the caller's scene are not seen.
     explicit PixelExplainer(const Scene& scene, RenderOptions options = {});
@@ -81,7 +81,7 @@ public:
     /// Throws ArgumentError for a pixel outside the image.
     PixelExplanation explain(int x, int y);
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

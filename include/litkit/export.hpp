@@ -32,8 +32,8 @@ struct ExportOptions {
 /// shader for each reflection × shading pair the scene's objects use:
 /// "<reflection>-<shading>.vert" and ".frag" (GLSL 3.30 core, the uniforms
 /// they expect documented at their top), sized for the scene's lights. The
-/// folder's files are written all or none (write_folder_atomically). Returns the paths written; throws
-/// IoError.
+/// folder's files are written all or none (write_folder_atomically). Returns the paths written;
+/// throws IoError.
 std::vector<std::filesystem::path> export_glsl(const Scene& scene,
                                                const std::filesystem::path& directory,
                                                const ExportOptions& options = {});

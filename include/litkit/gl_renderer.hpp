@@ -21,7 +21,7 @@ namespace litkit {
 /// failed (a shader the driver rejects, an incomplete framebuffer); what()
 /// says which and why.
 class GlError : public Error {
-public:
+  public:
     /// `what` is the whole message, saying which step failed and why.
     explicit GlError(const std::string& what) : Error(what) {}
 };
@@ -30,7 +30,7 @@ public:
 /// §1–§4), through the shaders of litkit/glsl.hpp. Keeps the programs and
 /// the uploaded meshes so that several frames cost only the drawing.
 class GlRenderer {
-public:
+  public:
     /// Creates the context, compiles the programs and uploads every object's
     /// world-space vertices. Throws GlError, or IoError for an unreadable
     /// mesh file. `options.threads` and `options.kernels` do not apply.
@@ -66,14 +66,15 @@ public:
 
     /// The triangles of every object together, as uploaded.
     std::size_t triangle_count() const;
-    /// GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6".
+    /// GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile)
+    /// Mesa 22.3.6".
     std::string description() const;
 
     /// The backend's state (src/gl/); public only so that the backend's own
     /// source files can name it.
     struct Impl;
 
-private:
+  private:
     GlRenderer(const Scene& scene, RenderOptions options, CurrentContext, bool headless);
     std::unique_ptr<Impl> impl_;
 };

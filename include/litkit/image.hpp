@@ -23,7 +23,9 @@ struct Image {
     Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
     /// The r, g, b bytes of pixel (x, y), x from the left, y from the top.
     /// Not checked: 0 ≤ x < width and 0 ≤ y < height is the caller's to keep.
-    std::uint8_t* pixel(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+    std::uint8_t* pixel(int x, int y) {
+        return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    }
     /// The r, g, b bytes of pixel (x, y), read only; not checked either.
     const std::uint8_t* pixel(int x, int y) const {
         return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];

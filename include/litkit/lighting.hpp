@@ -32,9 +32,7 @@ namespace litkit {
 using Rgb8 = std::array<std::uint8_t, 3>;
 /// An 8-bit colour as a 0–1 colour: each byte / 255 (so 255 → 1.0f).
 /// The inverse of to_rgb8 for every byte value. Never throws.
-inline glm::vec3 from_rgb8(const Rgb8& rgb) {
-    return glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f;
-}
+inline glm::vec3 from_rgb8(const Rgb8& rgb) { return glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f; }
 /// A 0–1 colour as 8 bits per channel: each channel clamped to [0, 1]
 /// (NaN → 0), × 255, rounded half up. Never throws.
 inline Rgb8 to_rgb8(const glm::vec3& color) {
@@ -134,11 +132,11 @@ struct Material {
     float ks = 0.5f;
     /// α, the specular exponent (≥ 0) of the models with a highlight.
     float shininess = 32.0f;
-    float sigma = 30.0f;       ///< oren-nayar: surface roughness σ in degrees
-    float roughness = 0.5f;    ///< cook-torrance: perceptual roughness r
-    float f0 = 0.04f;          ///< cook-torrance: reflectance at normal incidence
-    float bands = 3.0f;        ///< toon: how many diffuse levels (a whole number)
-    float minnaert_k = 1.5f;   ///< minnaert: limb darkening k
+    float sigma = 30.0f;      ///< oren-nayar: surface roughness σ in degrees
+    float roughness = 0.5f;   ///< cook-torrance: perceptual roughness r
+    float f0 = 0.04f;         ///< cook-torrance: reflectance at normal incidence
+    float bands = 3.0f;       ///< toon: how many diffuse levels (a whole number)
+    float minnaert_k = 1.5f;  ///< minnaert: limb darkening k
 };
 
 /// One parameter of the models of docs/spec.md §9.1 as scene files name and

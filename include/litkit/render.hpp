@@ -47,16 +47,17 @@ struct RenderOptions {
 /// fragment stage interpolated from them, the colour before clamping and the
 /// pixel written.
 struct PixelProbe {
-    bool hit = false;              ///< false: the background
-    std::size_t object = 0;        ///< index into Scene::objects
-    std::size_t triangle = 0;      ///< within the object's mesh
+    bool hit = false;                         ///< false: the background
+    std::size_t object = 0;                   ///< index into Scene::objects
+    std::size_t triangle = 0;                 ///< within the object's mesh
     std::array<std::uint32_t, 3> vertices{};  ///< the mesh vertex at each corner
-    bool clipped = false;          ///< a piece of a triangle crossing the near plane
-    std::array<float, 3> weights{};  ///< q0, q1, q2: perspective-correct, summing to 1
-    glm::vec3 position{0.0f};      ///< Phong shading: p, on the pixel's ray at its depth (docs/spec.md §3)
-    glm::vec3 normal{0.0f};        ///< Phong shading: N interpolated, before renormalising
-    glm::vec3 intensity{0.0f};     ///< I before clamping and gamma, as shaded
-    Rgb8 rgb{};                    ///< the pixel
+    bool clipped = false;                     ///< a piece of a triangle crossing the near plane
+    std::array<float, 3> weights{};           ///< q0, q1, q2: perspective-correct, summing to 1
+    glm::vec3 position{
+        0.0f};  ///< Phong shading: p, on the pixel's ray at its depth (docs/spec.md §3)
+    glm::vec3 normal{0.0f};     ///< Phong shading: N interpolated, before renormalising
+    glm::vec3 intensity{0.0f};  ///< I before clamping and gamma, as shaded
+    Rgb8 rgb{};                 ///< the pixel
 };
 
 /// Whether this CPU runs the given set of per-pixel kernels.
@@ -77,7 +78,7 @@ bool kernel_set_available(RenderOptions::Kernels kernels);
 /// load_scene runs: the renderer does not repeat that (costly) check and
 /// draws such a scene as it is.
 class Renderer {
-public:
+  public:
     /// Checks the preconditions (SceneError, ArgumentError), then builds every
     /// object's mesh; throws IoError for an unreadable mesh file.
     explicit Renderer(const Scene& scene, RenderOptions options = {});
@@ -118,7 +119,7 @@ public:
     /// after probe(), those of the pixel's band).
     std::size_t shaded_pixel_count() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -12,10 +12,10 @@
 #include "codegen/embedded_text.hpp"
 #include "codegen/gl_scene.hpp"
 #include "codegen/glsl_expr.hpp"
-#include "litkit/error.hpp"
 #include "core/files.hpp"
-#include "scene/float_range.hpp"
+#include "litkit/error.hpp"
 #include "litkit/glsl.hpp"
+#include "scene/float_range.hpp"
 
 namespace litkit {
 
@@ -45,7 +45,9 @@ ObjectModels object_models(const Scene& scene, const ExportOptions& options) {
     return models;
 }
 
-int light_capacity(const Scene& scene) { return std::max<int>(1, static_cast<int>(scene.lights.size())); }
+int light_capacity(const Scene& scene) {
+    return std::max<int>(1, static_cast<int>(scene.lights.size()));
+}
 
 // "blinn-phong" + "flat" → "blinn-phong-flat"; as an identifier "blinn_phong_flat".
 std::string pair_file_stem(const ModelPair& pair) {
@@ -79,7 +81,9 @@ std::string wrapped(std::string_view open, const std::string& text, std::string_
     return out;
 }
 
-std::string vec3_literal(const glm::vec3& v) { return wrapped("glm::vec3(", vec3_components(v), ")"); }
+std::string vec3_literal(const glm::vec3& v) {
+    return wrapped("glm::vec3(", vec3_components(v), ")");
+}
 
 // `{a, b, c}` for a brace-initialised glm::vec3 member.
 std::string vec3_braces(const glm::vec3& v) { return wrapped("{", vec3_components(v), "}"); }
@@ -159,7 +163,8 @@ std::string lights_source(const Scene& scene) {
                glsl::float_literal(source.intensity);
         if (const auto* spot = std::get_if<SpotLight>(&source.kind))
             out += ", cutoff " + glsl::float_literal(spot->cutoff_degrees) + " degrees";
-        out += "\n    {.kind = " + light_kind_name(l.kind) + ",\n     .radiance = " + vec3_braces(l.radiance);
+        out += "\n    {.kind = " + light_kind_name(l.kind) +
+               ",\n     .radiance = " + vec3_braces(l.radiance);
         if (l.kind == Kind::Point || l.kind == Kind::Spot) {
             out += ",\n     .position = " + vec3_braces(l.position);
         }
@@ -195,10 +200,12 @@ std::string shaders_source(const ObjectModels& models, const Scene& scene) {
         const glsl::Shaders shaders =
             glsl::generate_for_scene(pair.first, pair.second, lights, scene.output.gamma);
         const std::string id = pair_identifier(pair);
-        out += "// Program " + std::to_string(i) + ": reflection " + std::string(to_string(pair.first)) +
-               ", shading " + std::string(to_string(pair.second)) + ".\n";
+        out += "// Program " + std::to_string(i) + ": reflection " +
+               std::string(to_string(pair.first)) + ", shading " +
+               std::string(to_string(pair.second)) + ".\n";
         out += "const char* const " + id + "_vertex = R\"glsl(" + shaders.vertex + ")glsl\";\n\n";
-        out += "const char* const " + id + "_fragment = R\"glsl(" + shaders.fragment + ")glsl\";\n\n";
+        out +=
+            "const char* const " + id + "_fragment = R\"glsl(" + shaders.fragment + ")glsl\";\n\n";
         table += "    {" + id + "_vertex, " + id + "_fragment},\n";
     }
     return out + table + "};\n";
@@ -214,16 +221,17 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
-        const detail::GlObject gl = detail::gl_object(object, pair.first, pair.second,
-                                                      normal_options(scene, object));
+        const detail::GlObject gl =
+            detail::gl_object(object, pair.first, pair.second, normal_options(scene, object));
         const std::string id = "object" + std::to_string(i);
         const std::string label = (object.name.empty() ? std::string(shape_type_name(object.shape))
                                                        : printable(object.name));
         const bool flat = gl.indices.empty();
         const std::size_t per_vertex = flat ? 9 : 6;
 
-        out.arrays += "// " + id + " \"" + label + "\": " + std::string(shape_type_name(object.shape)) +
-                      ", " + std::to_string(gl.triangles) + " triangles\n";
+        out.arrays += "// " + id + " \"" + label +
+                      "\": " + std::string(shape_type_name(object.shape)) + ", " +
+                      std::to_string(gl.triangles) + " triangles\n";
         out.arrays += "const float " + id + "_vertices[] = {\n";
         for (std::size_t v = 0; v < gl.vertices.size(); v += per_vertex) {
             out.arrays += "   ";
@@ -253,17 +261,17 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
                               std::string(parameter.key) + "\", " + float_literal(value) + "}";
             },
             m);
-        out.objects += "    {.name = \"" + label + "\",\n     .program = " +
-                       std::to_string(models.program[i]) + ",  // " + pair_file_stem(pair) +
-                       "\n     .material = {.color = " + vec3_braces(m.color) + ", .ka = " +
-                       float_literal(m.ka) + ", .kd = " + float_literal(m.kd) + ", .ks = " +
-                       float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
-                       ",\n                  .parameters = {" + parameters +
-                       "}},\n     .vertices = " + id +
-                       "_vertices,\n     .vertex_floats = std::size(" + id + "_vertices)";
+        out.objects +=
+            "    {.name = \"" + label +
+            "\",\n     .program = " + std::to_string(models.program[i]) + ",  // " +
+            pair_file_stem(pair) + "\n     .material = {.color = " + vec3_braces(m.color) +
+            ", .ka = " + float_literal(m.ka) + ", .kd = " + float_literal(m.kd) +
+            ", .ks = " + float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
+            ",\n                  .parameters = {" + parameters + "}},\n     .vertices = " + id +
+            "_vertices,\n     .vertex_floats = std::size(" + id + "_vertices)";
         if (!flat) {
-            out.objects += ",\n     .indices = " + id + "_indices,\n     .index_count = std::size(" +
-                           id + "_indices)";
+            out.objects += ",\n     .indices = " + id +
+                           "_indices,\n     .index_count = std::size(" + id + "_indices)";
         }
         out.objects += "},\n";
     }
@@ -285,13 +293,13 @@ void refuse_to_overwrite_inputs(const Scene& scene, const std::vector<fs::path>&
                                 const ExportOptions& options) {
     std::vector<fs::path> inputs = options.inputs;
     for (const SceneObject& object : scene.objects)
-        if (const auto* mesh = std::get_if<MeshFileShape>(&object.shape)) inputs.push_back(mesh->file);
+        if (const auto* mesh = std::get_if<MeshFileShape>(&object.shape))
+            inputs.push_back(mesh->file);
     for (const fs::path& file : files)
         for (const fs::path& input : inputs)
             if (same_file(file, input))
-                throw ArgumentError("refusing to write '" + file.string() +
-                                    "' over input file '" + input.string() +
-                                    "'; choose another folder with -o");
+                throw ArgumentError("refusing to write '" + file.string() + "' over input file '" +
+                                    input.string() + "'; choose another folder with -o");
 }
 
 // The names of `files` within their folder, with their texts.
@@ -305,9 +313,10 @@ std::vector<std::pair<std::string, std::string>> named(const std::vector<fs::pat
 
 // CMake keeps these target names for itself.
 bool is_reserved_by_cmake(const std::string& name) {
-    static const char* const reserved[] = {"all", "clean", "help", "install", "test", "package",
-                                           "package_source", "edit_cache", "rebuild_cache",
-                                           "list_install_components", "preinstall", "depend"};
+    static const char* const reserved[] = {
+        "all",        "clean",          "help",       "install",       "test",
+        "package",    "package_source", "edit_cache", "rebuild_cache", "list_install_components",
+        "preinstall", "depend"};
     return std::any_of(std::begin(reserved), std::end(reserved),
                        [&](const char* word) { return name == word; });
 }
@@ -356,10 +365,10 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));
     if (!is_identifier(program_name))
         throw ArgumentError("program name '" + program_name +
-                                    "' is not a C identifier (letters, digits, _)");
+                            "' is not a C identifier (letters, digits, _)");
     if (is_reserved_by_cmake(program_name))
         throw ArgumentError("program name '" + program_name +
-                                    "' is a target name CMake keeps for itself; choose another");
+                            "' is a target name CMake keeps for itself; choose another");
     const ObjectModels models = object_models(scene, options);
     const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first
 
@@ -388,11 +397,14 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
          {"NAME", program_name}});
 
     const std::string cmake =
-        "# Builds " + program_name + " (generated by litkit " LITKIT_VERSION
+        "# Builds " + program_name +
+        " (generated by litkit " LITKIT_VERSION
         ", `litkit export --format cpp`).\n"
         "#   cmake -S . -B build && cmake --build build\n"
         "cmake_minimum_required(VERSION 3.16)\n"
-        "project(" + program_name + " LANGUAGES CXX)\n\n"
+        "project(" +
+        program_name +
+        " LANGUAGES CXX)\n\n"
         "set(CMAKE_CXX_STANDARD 20)\n"
         "set(CMAKE_CXX_STANDARD_REQUIRED ON)\n"
         "if(NOT CMAKE_BUILD_TYPE)\n"
@@ -403,13 +415,22 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
         "find_package(PNG REQUIRED)\n"
         "find_package(glm REQUIRED)\n"
         "find_package(SDL2 QUIET)  # optional: --window\n\n"
-        "add_executable(" + program_name + " main.cpp)\n"
-        "target_link_libraries(" + program_name + " PRIVATE PkgConfig::EPOXY PNG::PNG glm::glm)\n"
+        "add_executable(" +
+        program_name +
+        " main.cpp)\n"
+        "target_link_libraries(" +
+        program_name +
+        " PRIVATE PkgConfig::EPOXY PNG::PNG glm::glm)\n"
         "if(SDL2_FOUND)\n"
-        "    target_link_libraries(" + program_name + " PRIVATE SDL2::SDL2)\n"
-        "    target_compile_definitions(" + program_name + " PRIVATE WITH_SDL2)\n"
+        "    target_link_libraries(" +
+        program_name +
+        " PRIVATE SDL2::SDL2)\n"
+        "    target_compile_definitions(" +
+        program_name +
+        " PRIVATE WITH_SDL2)\n"
         "else()\n"
-        "    message(STATUS \"SDL2 not found: " + program_name +
+        "    message(STATUS \"SDL2 not found: " +
+        program_name +
         " will have no --window (Debian: libsdl2-dev)\")\n"
         "endif()\n";
 

@@ -13,7 +13,9 @@ GlObject gl_object(const SceneObject& object, Reflection reflection, Shading sha
     gl.material = object.material;
     gl.reflection = reflection;
     gl.shading = shading;
-    auto put = [&gl](const glm::vec3& v) { gl.vertices.insert(gl.vertices.end(), {v.x, v.y, v.z}); };
+    auto put = [&gl](const glm::vec3& v) {
+        gl.vertices.insert(gl.vertices.end(), {v.x, v.y, v.z});
+    };
     if (shading == Shading::Flat) {
         // docs/spec.md §3 flat: every corner carries the triangle's DD8 normal and
         // centroid, so the colour is the same whichever corner OpenGL uses.
@@ -38,7 +40,8 @@ GlObject gl_object(const SceneObject& object, Reflection reflection, Shading sha
             put(mesh.normals[i]);
         }
         gl.indices.reserve(mesh.triangles.size() * 3);
-        for (const auto& t : mesh.triangles) gl.indices.insert(gl.indices.end(), t.begin(), t.end());
+        for (const auto& t : mesh.triangles)
+            gl.indices.insert(gl.indices.end(), t.begin(), t.end());
     }
     return gl;
 }
@@ -46,7 +49,8 @@ GlObject gl_object(const SceneObject& object, Reflection reflection, Shading sha
 std::vector<equations::PreparedLight> prepared_lights(const Scene& scene) {
     std::vector<equations::PreparedLight> lights;
     lights.reserve(scene.lights.size());
-    for (const SceneLight& light : scene.lights) lights.push_back(equations::prepare_light(light.light));
+    for (const SceneLight& light : scene.lights)
+        lights.push_back(equations::prepare_light(light.light));
     return lights;
 }
 

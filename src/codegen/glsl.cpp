@@ -113,13 +113,19 @@ std::string unrolled_shade(std::span<const Light> lights) {
             text += "        Incidence incidence = point_incidence(" + at + "position, " + at +
                     "attenuation, p);\n";
             if (std::holds_alternative<SpotLight>(kind))
-                text += "        incidence.factor = incidence.factor * spot_factor(incidence.to_light, " +
-                        at + "direction,\n                                           " + at +
-                        "cos_cutoff, " + at + "cos_inner, " + at + "exponent);\n";
+                text +=
+                    "        incidence.factor = incidence.factor * "
+                    "spot_factor(incidence.to_light, " +
+                    at + "direction,\n                                           " + at +
+                    "cos_cutoff, " + at + "cos_inner, " + at + "exponent);\n";
         }
-        text += "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, u_material);\n"
-                "        total = total + direct_term(" + at + "radiance, incidence.factor, reflected, u_material);\n"
-                "    }\n";
+        text +=
+            "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, "
+            "u_material);\n"
+            "        total = total + direct_term(" +
+            at +
+            "radiance, incidence.factor, reflected, u_material);\n"
+            "    }\n";
     }
     return text + "    return total;\n}\n";
 }
@@ -238,20 +244,24 @@ std::string lighting_declarations(Reflection reflection, int light_capacity,
 // leaves the power out (a uniform branch still costs llvmpipe the power).
 std::string to_pixel_function(bool gamma_one) {
     return std::string(
-    "\n"
-    "uniform float u_inv_gamma;\n"
-    "\n"
-    "// The pixel value litkit defines, round(255 * clamp(I, 0, 1)^(1/gamma)) with halves up,\n"
-    "// as litkit::to_pixel computes it (NaN -> 0), divided by 255 so that the conversion\n"
-    "// to RGBA8 is exact.") + (gamma_one ? " This program is for gamma 1: no power.\n" : "\n") +
-    "vec3 to_pixel(vec3 intensity) {\n"
-    "    vec3 c = mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, vec3(0.0)));\n" +
-    (gamma_one ? "" : "    if (u_inv_gamma != 1.0) c = pow(c, vec3(u_inv_gamma));\n") +
-    "    vec3 scaled = 255.0 * c;\n"
-    "    vec3 level = floor(scaled);\n"
-    "    level += step(0.5, scaled - level);  // halves up (scaled - level is exact)\n"
-    "    return level / 255.0;\n"
-    "}\n";
+               "\n"
+               "uniform float u_inv_gamma;\n"
+               "\n"
+               "// The pixel value litkit defines, round(255 * clamp(I, 0, 1)^(1/gamma)) with "
+               "halves up,\n"
+               "// as litkit::to_pixel computes it (NaN -> 0), divided by 255 so that the "
+               "conversion\n"
+               "// to RGBA8 is exact.") +
+           (gamma_one ? " This program is for gamma 1: no power.\n" : "\n") +
+           "vec3 to_pixel(vec3 intensity) {\n"
+           "    vec3 c = mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, "
+           "vec3(0.0)));\n" +
+           (gamma_one ? "" : "    if (u_inv_gamma != 1.0) c = pow(c, vec3(u_inv_gamma));\n") +
+           "    vec3 scaled = 255.0 * c;\n"
+           "    vec3 level = floor(scaled);\n"
+           "    level += step(0.5, scaled - level);  // halves up (scaled - level is exact)\n"
+           "    return level / 255.0;\n"
+           "}\n";
 }
 
 }  // namespace
@@ -400,7 +410,7 @@ Shaders generate_program(Reflection reflection, Shading shading, int light_capac
 Shaders generate(Reflection reflection, Shading shading, int light_capacity) {
     if (light_capacity < 1) {
         throw ArgumentError("glsl::generate: the light capacity must be at least 1, not " +
-                                    std::to_string(light_capacity));
+                            std::to_string(light_capacity));
     }
     return generate_program(reflection, shading, light_capacity, std::nullopt, false);
 }
@@ -413,7 +423,8 @@ Shaders generate(Reflection reflection, Shading shading, std::span<const Light> 
 
 Shaders generate_for_scene(Reflection reflection, Shading shading, std::span<const Light> lights,
                            float gamma) {
-    if (lights.size() <= max_specialised_lights) return generate(reflection, shading, lights, gamma);
+    if (lights.size() <= max_specialised_lights)
+        return generate(reflection, shading, lights, gamma);
     return generate(reflection, shading, static_cast<int>(lights.size()));
 }
 

@@ -107,10 +107,9 @@ equations::Vec3<Expr> vec3_variable(const std::string& name) {
 }
 
 equations::MaterialT<Expr> material_variable(const std::string& name) {
-    equations::MaterialT<Expr> material{vec3_variable(name + ".color"),
-                                        Expr::variable(name + ".ka"), Expr::variable(name + ".kd"),
-                                        Expr::variable(name + ".ks"),
-                                        Expr::variable(name + ".shininess")};
+    equations::MaterialT<Expr> material{
+        vec3_variable(name + ".color"), Expr::variable(name + ".ka"), Expr::variable(name + ".kd"),
+        Expr::variable(name + ".ks"), Expr::variable(name + ".shininess")};
     for_each_model_parameter(
         [&](const ModelParameter& parameter, Expr& field) {
             field = Expr::variable(name + "." + std::string(parameter.key));
@@ -153,7 +152,7 @@ std::string parenthesised(const Printed& printed, bool needed) {
 }
 
 class Printer {
-public:
+  public:
     Printer(const PrintOptions& options, const std::unordered_map<const Node*, std::string>& names)
         : options_(options), names_(names) {}
 
@@ -204,7 +203,7 @@ public:
         throw std::logic_error("glsl::Printer: unknown operation");
     }
 
-private:
+  private:
     // Left-associative: a right operand of the same precedence keeps its
     // parentheses, so a - (b - c) and a * (b * c) print as written.
     Printed binary(const Node& node, std::string_view op, int precedence) const {

@@ -57,7 +57,7 @@ struct Node {
 
 // A float-valued expression.
 class Expr {
-public:
+  public:
     // A float literal; T(1), T(0.5f) in the templates.
     explicit Expr(float value);
     Expr() : Expr(0.0f) {}  // 0, so that aggregates of Expr can be declared
@@ -67,17 +67,17 @@ public:
 
     const NodePtr& node() const { return node_; }
 
-private:
+  private:
     NodePtr node_;
 };
 
 // A bool-valued expression: the result of a comparison.
 class Mask {
-public:
+  public:
     explicit Mask(NodePtr node) : node_(std::move(node)) {}
     const NodePtr& node() const { return node_; }
 
-private:
+  private:
     NodePtr node_;
 };
 

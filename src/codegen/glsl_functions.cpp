@@ -3,8 +3,8 @@
 // incidence per light kind, the spot factor, each reflection model's terms,
 // the ambient and direct terms, and how a function is printed. glsl.cpp
 // assembles them into the shaders.
-#include "litkit/glsl.hpp"
 #include "litkit/error.hpp"
+#include "litkit/glsl.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -119,7 +119,8 @@ Function reflection_terms_function(Reflection reflection) {
     for (const ReflectionModel& model : reflection_models())
         if (model.id == reflection) summary = model.summary;
     function.doc = "The " + std::string(to_string(reflection)) +
-                   " reflection model: the diffuse weight and colour\n(k_d*D and C for most models) and the specular S. " +
+                   " reflection model: the diffuse weight and colour\n(k_d*D and C for most "
+                   "models) and the specular S. " +
                    summary + "\nnormal, to_light (L) and to_eye (V) are unit vectors.";
 
     // Names for what the equations name, where the model computes them.

@@ -66,13 +66,15 @@ Error::Error(const std::string& what, FileLoc location)
     : std::runtime_error(what), location_(std::move(location)) {}
 
 SceneError::SceneError(std::vector<Diagnostic> diagnostics, std::vector<Diagnostic> warnings)
-    : Error(join_diagnostics(diagnostics), diagnostics.empty() ? FileLoc{} : diagnostics.front().location),
+    : Error(join_diagnostics(diagnostics),
+            diagnostics.empty() ? FileLoc{} : diagnostics.front().location),
       diagnostics_(std::move(diagnostics)),
       warnings_(std::move(warnings)) {}
 
 IoError::IoError(std::string path, std::string reason, FileLoc location, Access access)
     : Error((location.line > 0 ? location.to_string() + ": " : std::string()) + "error: cannot " +
-                (access == Access::Read ? "read" : "write") + " '" + printable(path) + "': " + printable(reason),
+                (access == Access::Read ? "read" : "write") + " '" + printable(path) +
+                "': " + printable(reason),
             location),
       path_(std::move(path)),
       reason_(std::move(reason)),

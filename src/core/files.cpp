@@ -107,7 +107,8 @@ std::string read_file_limited(const std::filesystem::path& path, std::uint64_t l
     if (::fstat(fd, &status) != 0) fail(errno_text(errno));
     if (S_ISDIR(status.st_mode)) fail(errno_text(EISDIR));
     // A regular file says its size: refuse at once, read nothing.
-    if (S_ISREG(status.st_mode) && static_cast<std::uint64_t>(status.st_size) > limit) fail(too_large);
+    if (S_ISREG(status.st_mode) && static_cast<std::uint64_t>(status.st_size) > limit)
+        fail(too_large);
     std::string bytes;
     if (S_ISREG(status.st_mode)) bytes.reserve(static_cast<std::size_t>(status.st_size));
     char buffer[1 << 16];
@@ -193,7 +194,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
     if (exists) {
         // Keep the replaced file's owner (root only; others cannot, and
         // keep their own) and mode; chown first, as it clears set-id bits.
-        if (::fchown(fd, status.st_uid, status.st_gid) != 0) { /* not root: the file is ours */ }
+        if (::fchown(fd, status.st_uid, status.st_gid) != 0) { /* not root: the file is ours */
+        }
         if (::fchmod(fd, status.st_mode & 07777) != 0) failure = errno_text(errno);
     }
     if (failure.empty()) failure = reserve_space(fd, bytes.size());
@@ -277,7 +279,8 @@ void write_folder_atomically(const std::filesystem::path& directory,
             if (!failure.empty()) fail(directory / name, failure);
         }
         if (!exists) {
-            if (::rename(temporary.c_str(), directory.c_str()) != 0) fail(directory, errno_text(errno));
+            if (::rename(temporary.c_str(), directory.c_str()) != 0)
+                fail(directory, errno_text(errno));
             for (int slot : slots) unregister_temporary(slot);
             return;
         }

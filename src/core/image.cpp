@@ -19,10 +19,10 @@
 #include <system_error>
 #include <vector>
 
-#include "litkit/error.hpp"
-#include "litkit/limits.hpp"
 #include "core/files.hpp"
 #include "core/thread_pool.hpp"
+#include "litkit/error.hpp"
+#include "litkit/limits.hpp"
 
 namespace litkit {
 
@@ -107,8 +107,9 @@ void filter_rows(const Image& image, int first, int end, std::vector<unsigned ch
 
 // Room for a well-compressed picture (a quarter); grown when needed.
 void reserve_quarter(Piece& piece, const Image& image, int rows) {
-    grow(piece, (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(rows) / 4 +
-                    1024);
+    grow(piece,
+         (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(rows) / 4 +
+             1024);
 }
 
 #if defined(LITKIT_HAVE_ISAL)
@@ -145,7 +146,8 @@ void deflate_rows_isal(const Image& image, int first, int end, bool last, Piece&
             stream.next_out = piece.bytes.get() + piece.size;
             stream.avail_out = static_cast<std::uint32_t>(
                 std::min<std::size_t>(piece.capacity - piece.size, std::size_t{1} << 30));
-            if (isal_deflate(&stream) != COMP_OK) throw Error("PNG encoding failed: ISA-L stream error");
+            if (isal_deflate(&stream) != COMP_OK)
+                throw Error("PNG encoding failed: ISA-L stream error");
             piece.size = static_cast<std::size_t>(stream.next_out - piece.bytes.get());
             // Done with the batch when ISA-L has taken it all and, at a
             // piece's end, written everything it held back (igzip_lib.h).
@@ -180,7 +182,7 @@ void deflate_rows_zlib(const Image& image, int first, int end, bool last, int le
         stream_taken += filtered.size();
         // The row that leaves no room for another ends its stream.
         const bool stream_ends = stream_taken + filtered.size() > stream_bytes;
-        const int flush = y + 1 == end ? (last ? Z_FINISH : Z_SYNC_FLUSH)
+        const int flush = y + 1 == end  ? (last ? Z_FINISH : Z_SYNC_FLUSH)
                           : stream_ends ? Z_SYNC_FLUSH
                                         : Z_NO_FLUSH;
         for (;;) {
@@ -198,7 +200,8 @@ void deflate_rows_zlib(const Image& image, int first, int end, bool last, int le
                 break;
         }
         if (stream_ends && y + 1 < end) {
-            if (deflateReset(&stream) != Z_OK) throw Error("PNG encoding failed: zlib stream error");
+            if (deflateReset(&stream) != Z_OK)
+                throw Error("PNG encoding failed: zlib stream error");
             stream_taken = 0;
         }
     }
@@ -240,8 +243,8 @@ std::string encode_png(const Image& image, int compression_level) {
 
     const std::size_t filtered_bytes =
         (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
-    const int split = filtered_bytes >= split_from_bytes && image.height >= 2 ? image.height / 2
-                                                                               : image.height;
+    const int split =
+        filtered_bytes >= split_from_bytes && image.height >= 2 ? image.height / 2 : image.height;
     Piece upper;
     Piece lower;
     if (split < image.height) {
@@ -271,9 +274,10 @@ std::string encode_png(const Image& image, int compression_level) {
 
     // The zlib stream: header (deflate, 32 KiB window, the level's class,
     // a check making it a multiple of 31), the pieces, the Adler-32.
-    const int level_class = compression_level < 2 ? 0 : compression_level < 6 ? 1
-                            : compression_level == 6                           ? 2
-                                                                               : 3;
+    const int level_class = compression_level < 2    ? 0
+                            : compression_level < 6  ? 1
+                            : compression_level == 6 ? 2
+                                                     : 3;
     unsigned header[2] = {0x78, static_cast<unsigned>(level_class << 6)};
     header[1] += (31 - (header[0] * 256 + header[1]) % 31) % 31;
     uLong adler = upper.adler;
@@ -292,7 +296,8 @@ std::string encode_png(const Image& image, int compression_level) {
     png.append("\x89PNG\r\n\x1a\n", 8);
     unsigned char ihdr[13] = {};
     for (int i = 0; i < 4; ++i) {
-        ihdr[i] = static_cast<unsigned char>(static_cast<std::uint32_t>(image.width) >> (24 - 8 * i));
+        ihdr[i] =
+            static_cast<unsigned char>(static_cast<std::uint32_t>(image.width) >> (24 - 8 * i));
         ihdr[4 + i] =
             static_cast<unsigned char>(static_cast<std::uint32_t>(image.height) >> (24 - 8 * i));
     }
@@ -323,8 +328,8 @@ Image read_png(const std::filesystem::path& path) {
     constexpr auto largest = static_cast<png_uint_32>(max_image_side);
     if (decoded.width > largest || decoded.height > largest) {
         png_image_free(&decoded);
-        throw IoError(path.string(), "image larger than " + std::to_string(max_image_side) +
-                                         " pixels on a side");
+        throw IoError(path.string(),
+                      "image larger than " + std::to_string(max_image_side) + " pixels on a side");
     }
     Image image(static_cast<int>(decoded.width), static_cast<int>(decoded.height));
     if (!png_image_finish_read(&decoded, nullptr, image.rgb.data(), 0, nullptr)) {

@@ -25,7 +25,8 @@ inline void run_parallel(const ParallelFor& parallel, std::size_t count, const P
 
 // Jobs of `chunk` consecutive indices each, for loops over many small items.
 template <class Body>
-void parallel_chunks(const ParallelFor& parallel, std::size_t count, std::size_t chunk, Body&& body) {
+void parallel_chunks(const ParallelFor& parallel, std::size_t count, std::size_t chunk,
+                     Body&& body) {
     run_parallel(parallel, (count + chunk - 1) / chunk, [&](std::size_t c) {
         const std::size_t end = count - c * chunk < chunk ? count : c * chunk + chunk;
         for (std::size_t i = c * chunk; i < end; ++i) body(i);

@@ -8,15 +8,15 @@
 #include <condition_variable>
 #include <cstddef>
 #include <memory>
-#include <type_traits>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace litkit {
 
 class ThreadPool {
-public:
+  public:
     // `threads` ≤ 0 means one per hardware thread. The calling thread works
     // too, so a pool of N threads starts N − 1 workers.
     explicit ThreadPool(int threads);
@@ -34,12 +34,15 @@ public:
     template <class Job>
     void parallel_for(std::size_t count, Job&& job) {
         using Callable = std::remove_reference_t<Job>;
-        run(count, [](const void* context, std::size_t index, int worker) {
-            (*static_cast<Callable*>(const_cast<void*>(context)))(index, worker);
-        }, std::addressof(job));
+        run(
+            count,
+            [](const void* context, std::size_t index, int worker) {
+                (*static_cast<Callable*>(const_cast<void*>(context)))(index, worker);
+            },
+            std::addressof(job));
     }
 
-private:
+  private:
     using Trampoline = void (*)(const void* context, std::size_t index, int worker);
     struct Task {
         Trampoline call = nullptr;

@@ -28,9 +28,12 @@ struct ClipVertex {
 
 // Signed distances of a clip-space point to the six clip planes; ≥ 0 inside.
 std::array<float, 6> plane_distances(const glm::vec4& c) {
-    return {c.z + c.w,  c.w - c.z,  // near, far
-            c.x + guard_band * c.w, guard_band * c.w - c.x,
-            c.y + guard_band * c.w, guard_band * c.w - c.y};
+    return {c.z + c.w,
+            c.w - c.z,  // near, far
+            c.x + guard_band * c.w,
+            guard_band * c.w - c.x,
+            c.y + guard_band * c.w,
+            guard_band * c.w - c.y};
 }
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t, int varying_count) {
@@ -82,9 +85,10 @@ WindowCorner to_window(const glm::vec4& c, float half_width, float half_height) 
     WindowCorner out;
     // plane_distances(c)[k] < 0, written out (the same sums and products).
     const float band_w = guard_band * c.w;
-    out.outside = static_cast<std::uint8_t>(
-        (c.z + c.w < 0.0f ? 1 : 0) | (c.w - c.z < 0.0f ? 2 : 0) | (c.x + band_w < 0.0f ? 4 : 0) |
-        (band_w - c.x < 0.0f ? 8 : 0) | (c.y + band_w < 0.0f ? 16 : 0) | (band_w - c.y < 0.0f ? 32 : 0));
+    out.outside =
+        static_cast<std::uint8_t>((c.z + c.w < 0.0f ? 1 : 0) | (c.w - c.z < 0.0f ? 2 : 0) |
+                                  (c.x + band_w < 0.0f ? 4 : 0) | (band_w - c.x < 0.0f ? 8 : 0) |
+                                  (c.y + band_w < 0.0f ? 16 : 0) | (band_w - c.y < 0.0f ? 32 : 0));
     const float inverse_w = 1.0f / c.w;
     // NDC x → [0, W] left to right; NDC y → [0, H] top to bottom.
     const double window_x = (c.x * inverse_w + 1.0f) * half_width;
@@ -112,7 +116,7 @@ WindowCorner to_window(const glm::vec4& c, float half_width, float half_height) 
 // comes from the pixel's ray) or colours (Gouraud), interpolated in clip
 // space, which keeps the later perspective-correct interpolation exact.
 void Pipeline::clip_triangle(std::uint32_t object_index, std::size_t triangle, int width,
-                                   int height, ClippedPieces& pieces) const {
+                             int height, ClippedPieces& pieces) const {
     const PreparedObject& object = objects[object_index];
     const std::vector<glm::vec4>& clip = clip_positions[object_index];
     const bool per_pixel = object.shading == Shading::Phong || object.shading == Shading::Faceted;

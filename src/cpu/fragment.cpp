@@ -43,8 +43,8 @@ inline glm::vec3 interpolate_normal(const PreparedObject& object, const ShadeTri
 
 // A span's corner normals for the kernel set's interpolate: the mesh
 // vertices', or the clipped piece's own.
-void span_normals(const PreparedObject& object, const ShadeTriangle& tri, const CornerVaryings* varyings,
-                  float (&normal)[3][3]) {
+void span_normals(const PreparedObject& object, const ShadeTriangle& tri,
+                  const CornerVaryings* varyings, float (&normal)[3][3]) {
     for (int k = 0; k < 3; ++k) {
         if (!varyings) {
             const glm::vec3& n = object.normals[tri.vertex[k]];
@@ -76,18 +76,17 @@ inline __m128 mix3(__m128 q0, __m128 q1, __m128 q2, __m128 c0, __m128 c1, __m128
 
 // Gouraud shading at column x: the corners' unclamped colours, the mesh's
 // or the clipped piece's, mixed with the perspective-correct weights.
-glm::vec3 gouraud_color(const Pipeline& pipeline, const ShadeTriangle* tri, const BandScratch& s, int x) {
+glm::vec3 gouraud_color(const Pipeline& pipeline, const ShadeTriangle* tri, const BandScratch& s,
+                        int x) {
     // Perspective-correct weights: (b_k / w_k) / Σ (b_j / w_j).
     const float q0 = s.q0[x], q1 = s.q1[x], q2 = s.q2[x];
     glm::vec3 c;
     if (!tri->clipped()) {
         const auto& colors = pipeline.vertex_colors[tri->object];
-        c = q0 * colors[tri->vertex[0]] + q1 * colors[tri->vertex[1]] +
-            q2 * colors[tri->vertex[2]];
+        c = q0 * colors[tri->vertex[0]] + q1 * colors[tri->vertex[1]] + q2 * colors[tri->vertex[2]];
     } else {
         const CornerVaryings& v = *pipeline.varyings_of(*tri);
-        c = {q0 * v[0][0] + q1 * v[1][0] + q2 * v[2][0],
-             q0 * v[0][1] + q1 * v[1][1] + q2 * v[2][1],
+        c = {q0 * v[0][0] + q1 * v[1][0] + q2 * v[2][0], q0 * v[0][1] + q1 * v[1][1] + q2 * v[2][1],
              q0 * v[0][2] + q1 * v[1][2] + q2 * v[2][2]};
     }
     return c;
@@ -99,8 +98,8 @@ glm::vec3 gouraud_color(const Pipeline& pipeline, const ShadeTriangle* tri, cons
 // this object, in one loop (a dense mesh's spans are one to three pixels:
 // the checks and look-ups of the general path would be most of the work).
 // The same formulas as surface_normals. Returns the column after the last.
-int mesh_normals(const kernels::Kernels& kernels, const PreparedObject& object, const ShadeTriangle* tri,
-                 std::size_t offset, int x, int end, BandScratch& s) {
+int mesh_normals(const kernels::Kernels& kernels, const PreparedObject& object,
+                 const ShadeTriangle* tri, std::size_t offset, int x, int end, BandScratch& s) {
     const ShadeTriangle* const* visible = s.visible.data() + offset;
     float* const out[3] = {s.nx.data(), s.ny.data(), s.nz.data()};
     const float* const q0 = s.q0.data();
@@ -121,12 +120,14 @@ int mesh_normals(const kernels::Kernels& kernels, const PreparedObject& object, 
                                 normal, {out[0] + at, out[1] + at, out[2] + at});
             at = span_end;
         } else {
-            const __m128 n0 = load3(&normals[span->vertex[0]].x), n1 = load3(&normals[span->vertex[1]].x),
+            const __m128 n0 = load3(&normals[span->vertex[0]].x),
+                         n1 = load3(&normals[span->vertex[1]].x),
                          n2 = load3(&normals[span->vertex[2]].x);
             // The triangle a few pixels on, fetched ahead (once a span).
             if (at + 12 < end) __builtin_prefetch(visible[at + 12]);
             do {
-                const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]), c = _mm_set1_ps(q2[at]);
+                const __m128 a = _mm_set1_ps(q0[at]), b = _mm_set1_ps(q1[at]),
+                             c = _mm_set1_ps(q2[at]);
                 store3(mix3(a, b, c, n0, n1, n2), out[0] + at, out[1] + at, out[2] + at);
                 ++at;
             } while (at < end && visible[at] == span);
@@ -142,8 +143,9 @@ int mesh_normals(const kernels::Kernels& kernels, const PreparedObject& object, 
 
 // Phong or faceted: the normals of one triangle's span of `count` pixels
 // from column `first` at once (the formulas of interpolate_normal).
-void surface_normals(const kernels::Kernels& kernels, const PreparedObject& object, const ShadeTriangle* tri,
-                     const CornerVaryings* varyings, std::size_t first, std::size_t count, BandScratch& s) {
+void surface_normals(const kernels::Kernels& kernels, const PreparedObject& object,
+                     const ShadeTriangle* tri, const CornerVaryings* varyings, std::size_t first,
+                     std::size_t count, BandScratch& s) {
     if (object.shading == Shading::Faceted) {
         // docs/spec.md §9.2 faceted: the triangle's DD8 normal.
         const glm::vec3& n = object.face_normals[tri->source];
@@ -152,25 +154,28 @@ void surface_normals(const kernels::Kernels& kernels, const PreparedObject& obje
         std::fill_n(&s.nz[first], count, n.z);
     } else
 #if defined(__SSE2__)
-    if (count < short_span) {
+        if (count < short_span) {
         // Small triangles: the formulas of interpolate_normal pixel by
         // pixel (a SIMD call across pixels would mostly pad), with x, y
         // and z in the lanes of one SSE vector: the same products and
         // sums, in the same order, as the scalar code and the kernel.
         __m128 corner[3];
         for (int k = 0; k < 3; ++k)
-            corner[k] = varyings ? load3(&(*varyings)[k][0]) : load3(&object.normals[tri->vertex[k]].x);
+            corner[k] =
+                varyings ? load3(&(*varyings)[k][0]) : load3(&object.normals[tri->vertex[k]].x);
         for (std::size_t at = first; at < first + count; ++at) {
-            const __m128 a = _mm_set1_ps(s.q0[at]), b = _mm_set1_ps(s.q1[at]), c = _mm_set1_ps(s.q2[at]);
+            const __m128 a = _mm_set1_ps(s.q0[at]), b = _mm_set1_ps(s.q1[at]),
+                         c = _mm_set1_ps(s.q2[at]);
             store3(mix3(a, b, c, corner[0], corner[1], corner[2]), &s.nx[at], &s.ny[at], &s.nz[at]);
         }
     } else
 #endif
-    if (count < short_span) {
+        if (count < short_span) {
         // Small triangles: the scalar formulas, pixel by pixel (a SIMD
         // call would mostly pad); the same roundings as the kernel.
         for (std::size_t at = first; at < first + count; ++at) {
-            const glm::vec3 n = interpolate_normal(object, *tri, varyings, s.q0[at], s.q1[at], s.q2[at]);
+            const glm::vec3 n =
+                interpolate_normal(object, *tri, varyings, s.q0[at], s.q1[at], s.q2[at]);
             s.nx[at] = n.x, s.ny[at] = n.y, s.nz[at] = n.z;
         }
     } else {
@@ -277,10 +282,12 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
     auto flush = [&] {
         if (run_length == 0) return;
         const std::size_t at = static_cast<std::size_t>(run_first);
-        const kernels::SurfaceRun surface{&rays,         pixel_k(run_first, width),
-                                          &s.view_w[at], &s.nx[at], &s.ny[at], &s.nz[at], run_length};
-        kernels.shade_phong(run_object->reflection, lights, run_object->raw_material, surface,
-                            {s.r.data() + run_first, s.g.data() + run_first, s.b.data() + run_first});
+        const kernels::SurfaceRun surface{
+            &rays,     pixel_k(run_first, width), &s.view_w[at], &s.nx[at], &s.ny[at], &s.nz[at],
+            run_length};
+        kernels.shade_phong(
+            run_object->reflection, lights, run_object->raw_material, surface,
+            {s.r.data() + run_first, s.g.data() + run_first, s.b.data() + run_first});
         run_length = 0;
     };
 
@@ -317,7 +324,8 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
             s.r[x] = c.x, s.g[x] = c.y, s.b[x] = c.z;
             continue;
         }
-        if (run_object != &object || (run_length > 0 && run_first + static_cast<int>(run_length) != x))
+        if (run_object != &object ||
+            (run_length > 0 && run_first + static_cast<int>(run_length) != x))
             flush();
         if (run_length == 0) run_first = x;
         run_object = &object;
@@ -334,7 +342,8 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
         while (span_end < end && s.visible[offset + static_cast<std::size_t>(span_end)] == tri)
             ++span_end;
         const std::size_t count = static_cast<std::size_t>(span_end - x);
-        surface_normals(kernels, object, tri, varyings_of(*tri), static_cast<std::size_t>(x), count, s);
+        surface_normals(kernels, object, tri, varyings_of(*tri), static_cast<std::size_t>(x), count,
+                        s);
         run_length += count;
         x = span_end - 1;
     }

@@ -29,11 +29,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/thread_pool.hpp"
+#include "cpu/shade_kernel.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
-#include "cpu/shade_kernel.hpp"
-#include "core/thread_pool.hpp"
 #include "scene/camera.hpp"
 
 namespace litkit {
@@ -120,14 +120,14 @@ struct ClippedPieces {
 // Per-thread scratch for one band: the visibility buffer (nearest triangle
 // and its perspective-correct weights per pixel) and one row of colours.
 struct BandScratch {
-    std::vector<float> depth;                    // 1/w; 0 = nothing drawn
-    std::vector<const ShadeTriangle*> visible;   // nullptr = background
-    std::vector<float> weight1, weight2;         // b1/w1, b2/w2 (perspective weights × 1/w)
-    std::vector<float> r, g, b;                  // one row of intensities
-    std::vector<float> q0, q1, q2;               // one row of perspective-correct weights
-    std::vector<float> view_w, nx, ny, nz;     // one row of Phong surfaces (view depth, normal)
+    std::vector<float> depth;                     // 1/w; 0 = nothing drawn
+    std::vector<const ShadeTriangle*> visible;    // nullptr = background
+    std::vector<float> weight1, weight2;          // b1/w1, b2/w2 (perspective weights × 1/w)
+    std::vector<float> r, g, b;                   // one row of intensities
+    std::vector<float> q0, q1, q2;                // one row of perspective-correct weights
+    std::vector<float> view_w, nx, ny, nz;        // one row of Phong surfaces (view depth, normal)
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
-    std::size_t shaded_pixels = 0;               // this frame, by this thread
+    std::size_t shaded_pixels = 0;                // this frame, by this thread
     // Setup's triangles of the chunk at hand, before they are binned.
     std::vector<BinnedTriangle> pending;
     std::vector<std::uint32_t> band_count;
@@ -143,13 +143,13 @@ struct Pipeline {
     std::vector<PreparedObject> objects;
 
     // Per-frame state, kept between frames to avoid reallocating.
-    Camera camera;                                        // docs/spec.md §1, for this frame's size
+    Camera camera;                                       // docs/spec.md §1, for this frame's size
     std::vector<std::vector<glm::vec4>> clip_positions;  // per object, per vertex
     std::vector<std::vector<WindowCorner>> window_corners;  // per object, per vertex
-    std::vector<std::vector<glm::vec3>> vertex_colors;   // Gouraud, per object
-    std::vector<std::vector<glm::vec3>> flat_colors;     // flat, per object, per triangle
+    std::vector<std::vector<glm::vec3>> vertex_colors;      // Gouraud, per object
+    std::vector<std::vector<glm::vec3>> flat_colors;        // flat, per object, per triangle
     std::vector<SetupChunk> chunks;
-    std::vector<BandScratch> scratch;  // one per thread
+    std::vector<BandScratch> scratch;          // one per thread
     std::vector<std::uint8_t> background_row;  // one image row of background colour
     int band_count = 0;
     // Set while Renderer::probe draws: the pixel to record, and the record.

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <utility>
 
-#include "litkit/mesh.hpp"
-#include "cpu/pipeline.hpp"
 #include "core/parallel.hpp"
+#include "cpu/pipeline.hpp"
+#include "litkit/mesh.hpp"
 #include "scene/world_mesh.hpp"
 
 namespace litkit {
@@ -17,7 +17,8 @@ namespace litkit {
 // Everything of the scene but its meshes: lights, materials and models.
 void Pipeline::prepare_surfaces() {
     lights.clear();
-    for (const SceneLight& light : scene.lights) lights.push_back(equations::prepare_light(light.light));
+    for (const SceneLight& light : scene.lights)
+        lights.push_back(equations::prepare_light(light.light));
     const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
     const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
     for (std::size_t o = 0; o < objects.size(); ++o) {

@@ -63,8 +63,9 @@ EdgeFunctions edge_functions(const RasterTriangle& tri, int y0) {
 // edge functions in the lanes of one 32-bit SSE2 vector (exact: they stay
 // far inside 32 bits for a small triangle, and a float made from the same
 // integer is the same float).
-void visibility_small_lanes(const RasterTriangle& tri, const ShadeTriangle* shade, const EdgeFunctions& edges,
-                            int y0, int y1, int row_begin, int width, BandScratch& s) {
+void visibility_small_lanes(const RasterTriangle& tri, const ShadeTriangle* shade,
+                            const EdgeFunctions& edges, int y0, int y1, int row_begin, int width,
+                            BandScratch& s) {
     const std::array<std::int64_t, 3>& step_x = edges.step_x;
     const std::array<std::int64_t, 3>& step_y = edges.step_y;
     const std::array<std::int64_t, 3>& origin = edges.origin;
@@ -83,8 +84,8 @@ void visibility_small_lanes(const RasterTriangle& tri, const ShadeTriangle* shad
     };
     const int span = tri.max_x - tri.min_x;
     __m128i r = _mm_add_epi32(lanes(origin), bv);  // at the row's first pixel
-    std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
-                      static_cast<std::size_t>(tri.min_x);
+    std::size_t row =
+        static_cast<std::size_t>(y0 - row_begin) * width + static_cast<std::size_t>(tri.min_x);
     for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
         __m128i e = r;
         r = _mm_add_epi32(r, sy);
@@ -122,8 +123,9 @@ void visibility_small_lanes(const RasterTriangle& tri, const ShadeTriangle* shad
 // A narrow triangle (all of them, in meshes of 100k triangles and more):
 // found by stepping the edge functions from pixel to pixel (the covered ones
 // of a row are consecutive) instead of three 64-bit divisions a row.
-void visibility_narrow(const RasterTriangle& tri, const ShadeTriangle* shade, const EdgeFunctions& edges,
-                       int y0, int y1, int row_begin, int width, BandScratch& s) {
+void visibility_narrow(const RasterTriangle& tri, const ShadeTriangle* shade,
+                       const EdgeFunctions& edges, int y0, int y1, int row_begin, int width,
+                       BandScratch& s) {
     const std::array<std::int64_t, 3>& step_x = edges.step_x;
     const std::array<std::int64_t, 3>& step_y = edges.step_y;
     const std::array<std::int64_t, 3>& origin = edges.origin;
@@ -136,8 +138,8 @@ void visibility_narrow(const RasterTriangle& tri, const ShadeTriangle* shade, co
     const int span = tri.max_x - tri.min_x;
     // The biased edge functions at the row's first pixel.
     std::int64_t r0 = origin[0] + b0, r1 = origin[1] + b1, r2 = origin[2] + b2;
-    std::size_t row = static_cast<std::size_t>(y0 - row_begin) * width +
-                      static_cast<std::size_t>(tri.min_x);
+    std::size_t row =
+        static_cast<std::size_t>(y0 - row_begin) * width + static_cast<std::size_t>(tri.min_x);
     for (int band_row = y0 - row_begin; band_row <= y1 - row_begin; ++band_row) {
         std::int64_t e0 = r0, e1 = r1, e2 = r2;
         r0 += step_y[0], r1 += step_y[1], r2 += step_y[2];
@@ -172,9 +174,9 @@ void visibility_narrow(const RasterTriangle& tri, const ShadeTriangle* shade, co
 
 // A wide triangle: each row's covered span solved from the edge functions,
 // then tested and written by the kernel set.
-void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade, const EdgeFunctions& edges,
-                     int y0, int y1, int row_begin, int width, BandScratch& s,
-                     const kernels::Kernels& kernels) {
+void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade,
+                     const EdgeFunctions& edges, int y0, int y1, int row_begin, int width,
+                     BandScratch& s, const kernels::Kernels& kernels) {
     const std::array<std::int64_t, 3>& step_x = edges.step_x;
     const std::array<std::int64_t, 3>& step_y = edges.step_y;
     const std::array<std::int64_t, 3>& origin = edges.origin;
@@ -191,8 +193,10 @@ void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade, cons
             if (step_x[k] > 0) {
                 if (e[k] < 0) first = std::max(first, (-e[k] + step_x[k] - 1) / step_x[k]);
             } else if (step_x[k] < 0) {
-                if (e[k] < 0) last = -1;
-                else last = std::min(last, e[k] / -step_x[k]);
+                if (e[k] < 0)
+                    last = -1;
+                else
+                    last = std::min(last, e[k] / -step_x[k]);
             } else if (e[k] < 0) {
                 last = -1;
             }
@@ -203,8 +207,8 @@ void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade, cons
             std::min(s.touched_begin[band_row], tri.min_x + static_cast<int>(first));
         s.touched_end[band_row] =
             std::max(s.touched_end[band_row], tri.min_x + static_cast<int>(last) + 1);
-        const std::size_t row = static_cast<std::size_t>(band_row) * width +
-                                static_cast<std::size_t>(tri.min_x);
+        const std::size_t row =
+            static_cast<std::size_t>(band_row) * width + static_cast<std::size_t>(tri.min_x);
         // The unbiased edge functions at the span's first pixel,
         // stepped along the row by the kernel set (several pixels
         // at a time) where they stay within a double's exact
@@ -217,7 +221,8 @@ void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade, cons
         bool within = true;
         for (int k = 0; k < 3; ++k) {
             const std::int64_t end_value = v[k] + (count - 1) * step_x[k];
-            within = within && v[k] < exact && v[k] > -exact && end_value < exact && end_value > -exact;
+            within =
+                within && v[k] < exact && v[k] > -exact && end_value < exact && end_value > -exact;
         }
         const std::size_t at = row + static_cast<std::size_t>(first);
         (within ? kernels.visibility_row : kernels::visibility_row_scalar)(
@@ -260,7 +265,8 @@ void Pipeline::rasterize_band(int band, BandScratch& s, int width, int height) c
                 kernels.visibility_small(tri, y0, y1 - y0 + 1, shade, &s.depth[first_row],
                                          reinterpret_cast<const void**>(&s.visible[first_row]),
                                          &s.weight1[first_row], &s.weight2[first_row], width,
-                                         &s.touched_begin[y0 - row_begin], &s.touched_end[y0 - row_begin]);
+                                         &s.touched_begin[y0 - row_begin],
+                                         &s.touched_end[y0 - row_begin]);
                 continue;
             }
             const EdgeFunctions edges = edge_functions(tri, y0);

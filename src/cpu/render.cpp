@@ -24,15 +24,20 @@ const kernels::Kernels& pick_kernels(RenderOptions::Kernels set) {
                             (set == RenderOptions::Kernels::Avx512 ? "AVX-512" : "AVX2") +
                             " kernel set");
     switch (set) {
-        case RenderOptions::Kernels::Portable: return kernels::portable_kernels;
+        case RenderOptions::Kernels::Portable:
+            return kernels::portable_kernels;
 #if defined(__x86_64__) || defined(__i386__)  // the other sets exist on x86 only
-        case RenderOptions::Kernels::Avx2: return kernels::avx2_kernels;
-        case RenderOptions::Kernels::Avx512: return kernels::avx512_kernels;
+        case RenderOptions::Kernels::Avx2:
+            return kernels::avx2_kernels;
+        case RenderOptions::Kernels::Avx512:
+            return kernels::avx512_kernels;
 #else
         case RenderOptions::Kernels::Avx2:
-        case RenderOptions::Kernels::Avx512: break;  // refused above
+        case RenderOptions::Kernels::Avx512:
+            break;  // refused above
 #endif
-        case RenderOptions::Kernels::Best: break;
+        case RenderOptions::Kernels::Best:
+            break;
     }
     return kernels::select_kernels();
 }
@@ -50,9 +55,12 @@ void check_preconditions(const Scene& scene, const RenderOptions& options) {
 
 bool kernel_set_available(RenderOptions::Kernels set) {
     switch (set) {
-        case RenderOptions::Kernels::Avx2: return kernels::cpu_has_avx2();
-        case RenderOptions::Kernels::Avx512: return kernels::cpu_has_avx512();
-        default: return true;
+        case RenderOptions::Kernels::Avx2:
+            return kernels::cpu_has_avx2();
+        case RenderOptions::Kernels::Avx512:
+            return kernels::cpu_has_avx512();
+        default:
+            return true;
     }
 }
 
@@ -124,9 +132,10 @@ void Renderer::render_into(Image& image) {
         draw_band(impl.probe_y / band_height, impl.scratch[0]);
         return;
     }
-    impl.pool.parallel_for(static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
-        draw_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)]);
-    });
+    impl.pool.parallel_for(
+        static_cast<std::size_t>(impl.band_count), [&](std::size_t band, int worker) {
+            draw_band(static_cast<int>(band), impl.scratch[static_cast<std::size_t>(worker)]);
+        });
 }
 
 void Renderer::update(const Scene& new_scene) {
@@ -154,8 +163,8 @@ PixelProbe Renderer::probe(int x, int y) {
     const OutputSettings& output = impl_->scene.output;
     if (x < 0 || y < 0 || x >= output.width || y >= output.height) {
         throw ArgumentError("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                ") is outside the " + std::to_string(output.width) + "x" +
-                                std::to_string(output.height) + " image");
+                            ") is outside the " + std::to_string(output.width) + "x" +
+                            std::to_string(output.height) + " image");
     }
     impl_->probed = PixelProbe{};
     impl_->probe_x = x;
@@ -187,4 +196,3 @@ Image render(const Scene& scene, RenderOptions options) {
 }
 
 }  // namespace litkit
-

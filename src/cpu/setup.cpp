@@ -32,7 +32,9 @@ std::int64_t doubled_area(const WindowCorner& c0, const WindowCorner& c1, const 
 int first_pixel(std::int64_t lo) {
     return static_cast<int>((lo - subpixel_one / 2 + subpixel_one - 1) >> subpixel_bits);
 }
-int last_pixel(std::int64_t hi) { return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits); }
+int last_pixel(std::int64_t hi) {
+    return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits);
+}
 
 // One setup job's making of triangles from window corners, into the
 // thread's `pending` list (and, for clipped pieces, the chunk's `clipped`),
@@ -44,13 +46,13 @@ struct SetupJob {
     int width, height;
     std::vector<BinnedTriangle>& pending;
     std::vector<std::uint32_t>& counts;  // triangles per band of rows, counts[b + 1] for band b
-    bool flat_done = false;  // the current source triangle's flat colour is computed
+    bool flat_done = false;              // the current source triangle's flat colour is computed
 
     // Setup of a front-facing (area < 0) piece with valid corners; nothing
     // when it covers no pixel centre of the image.
     void emit_front(const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
-                    std::int64_t area, std::uint32_t source, const std::array<std::uint32_t, 3>& vertex,
-                    const CornerVaryings* varyings) {
+                    std::int64_t area, std::uint32_t source,
+                    const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
         RasterTriangle raster;
         raster.x = {c0.x, c2.x, c1.x};
         raster.y = {c0.y, c2.y, c1.y};
@@ -88,12 +90,14 @@ struct SetupJob {
         shade.vertex = {vertex[0], vertex[2], vertex[1]};
         if (varyings) {
             shade.vertex = {static_cast<std::uint32_t>(chunk.clipped.size()),
-                            static_cast<std::uint32_t>(&chunk - pipeline.chunks.data()), ShadeTriangle::clipped_piece};
+                            static_cast<std::uint32_t>(&chunk - pipeline.chunks.data()),
+                            ShadeTriangle::clipped_piece};
             chunk.clipped.push_back({(*varyings)[0], (*varyings)[2], (*varyings)[1]});
         }
         pending.push_back({raster, shade});
         // Counted for binning (below) as it is made.
-        for (int b = top / band_height; b <= bottom / band_height; ++b) ++counts[static_cast<std::size_t>(b) + 1];
+        for (int b = top / band_height; b <= bottom / band_height; ++b)
+            ++counts[static_cast<std::size_t>(b) + 1];
     }
 
     // Setup of one (piece of a) triangle from its window corners; nothing
@@ -111,8 +115,8 @@ struct SetupJob {
 // Binning: each band of rows gets a copy of the triangles that may touch
 // it, in setup order (counted as they were made, so the chunk's one
 // array is sized exactly).
-void bin(SetupChunk& chunk, const std::vector<BinnedTriangle>& pending, std::vector<std::uint32_t>& counts,
-         std::size_t bands) {
+void bin(SetupChunk& chunk, const std::vector<BinnedTriangle>& pending,
+         std::vector<std::uint32_t>& counts, std::size_t bands) {
     chunk.band_start.resize(bands + 1);
     chunk.band_start[0] = 0;
     for (std::size_t b = 0; b < bands; ++b) {

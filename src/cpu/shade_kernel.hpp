@@ -115,8 +115,7 @@ struct Kernels {
     // at p = eye + w · d, d = centre + k · across (RowRays), each product
     // rounded on its own.
     void (*shade_phong)(Reflection reflection, std::span<const equations::PreparedLight> lights,
-                        const Material& material, const SurfaceRun& surface,
-                        const ColorRun& out);
+                        const Material& material, const SurfaceRun& surface, const ColorRun& out);
     // docs/spec.md §4 pixel values: round(255 · clamp(I, 0, 1)^(1/gamma)) per channel,
     // written as interleaved RGB bytes.
     void (*encode)(const float* r, const float* g, const float* b, std::size_t count, float gamma,
@@ -130,9 +129,10 @@ struct Kernels {
     // visible[i] = triangle, weight1[i] = p1, weight2[i] = p2. The same
     // float operations, in the same order, in every set; only how many
     // pixels at a time differs.
-    void (*visibility_row)(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
-                           std::size_t count, float* depth, const void** visible, const void* triangle,
-                           float* weight1, float* weight2);
+    void (*visibility_row)(const std::int64_t v[3], const std::int64_t step[3],
+                           const float weight[3], std::size_t count, float* depth,
+                           const void** visible, const void* triangle, float* weight1,
+                           float* weight2);
     // The visibility pass of a small triangle (RasterTriangle::small()) on
     // `rows` rows from pixel row `first_row` (within its box), columns
     // min_x to max_x: its edge functions, edge k from corner k+1 to corner
@@ -146,16 +146,18 @@ struct Kernels {
     // pixels. The buffers and the touched arrays start at row first_row
     // (and column 0); `stride` is the buffers' row length. Null in the
     // portable set, whose small triangles rasterize.cpp tests itself.
-    void (*visibility_small)(const RasterTriangle& triangle, int first_row, int rows, const void* shade,
-                             float* depth, const void** visible, float* weight1, float* weight2,
-                             std::size_t stride, int* touched_begin, int* touched_end);
+    void (*visibility_small)(const RasterTriangle& triangle, int first_row, int rows,
+                             const void* shade, float* depth, const void** visible, float* weight1,
+                             float* weight2, std::size_t stride, int* touched_begin,
+                             int* touched_end);
 };
 
 // visibility_row one pixel at a time: the portable set's, and the other
 // sets' for what is left of a row after their full vectors.
-void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
-                           std::size_t count, float* depth, const void** visible, const void* triangle,
-                           float* weight1, float* weight2);
+void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3],
+                           const float weight[3], std::size_t count, float* depth,
+                           const void** visible, const void* triangle, float* weight1,
+                           float* weight2);
 
 extern const Kernels portable_kernels;
 extern const Kernels avx2_kernels;    // only valid where the CPU has AVX2 and FMA

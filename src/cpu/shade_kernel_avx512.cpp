@@ -30,7 +30,8 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
         step8[k] = _mm512_slli_epi64(s, 3);
         w[k] = _mm256_set1_ps(weight[k]);
     }
-    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(triangle)));
+    const __m512i tri =
+        _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(triangle)));
     for (std::size_t i = 0; i < count; i += 8) {
         const __mmask8 lanes =
             count - i >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << (count - i)) - 1u);
@@ -53,9 +54,10 @@ void visibility_row(const std::int64_t v[3], const std::int64_t step[3], const f
 
 // visibility_small of a box at most 8 pixels wide, two rows at a time:
 // lanes 0-7 the first row's pixels, lanes 8-15 the next row's.
-void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, int rows, const void* shade,
-                            float* depth, const void** visible, float* weight1, float* weight2,
-                            std::size_t stride, int* touched_begin, int* touched_end) {
+void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, int rows,
+                            const void* shade, float* depth, const void** visible, float* weight1,
+                            float* weight2, std::size_t stride, int* touched_begin,
+                            int* touched_end) {
     const int span = t.max_x - t.min_x;
     const __m512i column = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
     const __m512i second = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
@@ -63,12 +65,14 @@ void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, in
     __m512i offset[3], bias[3];
     __m512 w[3];
     for (int k = 0; k < 3; ++k) {
-        offset[k] = _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(edges.step_x[k])),
-                                     _mm512_mullo_epi32(second, _mm512_set1_epi32(edges.step_y[k])));
+        offset[k] =
+            _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(edges.step_x[k])),
+                             _mm512_mullo_epi32(second, _mm512_set1_epi32(edges.step_y[k])));
         bias[k] = _mm512_set1_epi32(edges.bias[k]);
         w[k] = _mm512_set1_ps(t.weight[k]);
     }
-    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
+    const __m512i tri =
+        _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
     std::int32_t row_origin[3] = {edges.origin[0], edges.origin[1], edges.origin[2]};
     for (int row = 0; row < rows; row += 2) {
         __m512i e[3];
@@ -80,12 +84,14 @@ void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, in
             row_origin[k] += 2 * edges.step_y[k];
         }
         if (!covered) continue;
-        const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
+        const std::size_t at =
+            static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
         // The second row's place; where there is none (its lanes are all
         // masked off), the first row's, so that no address is past the
         // buffers.
         const std::size_t next = row + 1 < rows ? at + stride : at;
-        const auto first_half = static_cast<__mmask8>(covered), second_half = static_cast<__mmask8>(covered >> 8);
+        const auto first_half = static_cast<__mmask8>(covered),
+                   second_half = static_cast<__mmask8>(covered >> 8);
         const __m512 p0 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[0], bias[0])), w[0]);
         const __m512 p1 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[1], bias[1])), w[1]);
         const __m512 p2 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[2], bias[2])), w[2]);
@@ -93,9 +99,11 @@ void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, in
         const __m512 old_depth = _mm512_insertf32x8(
             _mm512_castps256_ps512(_mm256_maskz_loadu_ps(first_half, depth + at)),
             _mm256_maskz_loadu_ps(second_half, depth + next), 1);
-        const __mmask16 nearer = _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
+        const __mmask16 nearer =
+            _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
         if (nearer) {
-            const auto nearer_first = static_cast<__mmask8>(nearer), nearer_second = static_cast<__mmask8>(nearer >> 8);
+            const auto nearer_first = static_cast<__mmask8>(nearer),
+                       nearer_second = static_cast<__mmask8>(nearer >> 8);
             auto store = [&](float* buffer, __m512 value) {
                 _mm256_mask_storeu_ps(buffer + at, nearer_first, _mm512_castps512_ps256(value));
                 // Extracted into a register first: GCC would otherwise fuse
@@ -117,22 +125,24 @@ void visibility_small_pairs(const SmallEdges& edges, const RasterTriangle& t, in
         for (int half = 0; half < 2; ++half) {
             const unsigned bits = (static_cast<unsigned>(covered) >> (8 * half)) & 0xffu;
             if (!bits) continue;
-            touched_begin[row + half] = std::min(touched_begin[row + half], t.min_x + __builtin_ctz(bits));
-            touched_end[row + half] = std::max(touched_end[row + half], t.min_x + 32 - __builtin_clz(bits));
+            touched_begin[row + half] =
+                std::min(touched_begin[row + half], t.min_x + __builtin_ctz(bits));
+            touched_end[row + half] =
+                std::max(touched_end[row + half], t.min_x + 32 - __builtin_clz(bits));
         }
     }
 }
 
 // visibility_small a row at a time: a row's (at most 9) pixels in the
 // lanes of one vector; boxes at most 8 pixels wide two rows at a time.
-void visibility_small(const RasterTriangle& t, int first_row, int rows, const void* shade, float* depth,
-                      const void** visible, float* weight1, float* weight2, std::size_t stride,
-                      int* touched_begin, int* touched_end) {
+void visibility_small(const RasterTriangle& t, int first_row, int rows, const void* shade,
+                      float* depth, const void** visible, float* weight1, float* weight2,
+                      std::size_t stride, int* touched_begin, int* touched_end) {
     const SmallEdges edges = small_edges(t, first_row);
     const int span = t.max_x - t.min_x;
     if (span < 8 && rows > 1) {
-        visibility_small_pairs(edges, t, rows, shade, depth, visible, weight1, weight2, stride, touched_begin,
-                               touched_end);
+        visibility_small_pairs(edges, t, rows, shade, depth, visible, weight1, weight2, stride,
+                               touched_begin, touched_end);
         return;
     }
     const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -144,7 +154,8 @@ void visibility_small(const RasterTriangle& t, int first_row, int rows, const vo
         bias[k] = _mm512_set1_epi32(edges.bias[k]);
         w[k] = _mm512_set1_ps(t.weight[k]);
     }
-    const __m512i tri = _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
+    const __m512i tri =
+        _mm512_set1_epi64(static_cast<long long>(reinterpret_cast<std::intptr_t>(shade)));
     std::int32_t row_origin[3] = {edges.origin[0], edges.origin[1], edges.origin[2]};
     for (int row = 0; row < rows; ++row) {
         __m512i e[3];
@@ -155,13 +166,15 @@ void visibility_small(const RasterTriangle& t, int first_row, int rows, const vo
             row_origin[k] += edges.step_y[k];
         }
         if (!covered) continue;
-        const std::size_t at = static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
+        const std::size_t at =
+            static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(t.min_x);
         const __m512 p0 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[0], bias[0])), w[0]);
         const __m512 p1 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[1], bias[1])), w[1]);
         const __m512 p2 = _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_sub_epi32(e[2], bias[2])), w[2]);
         const __m512 inverse_w = _mm512_add_ps(_mm512_add_ps(p0, p1), p2);
         const __m512 old_depth = _mm512_maskz_loadu_ps(covered, depth + at);
-        const __mmask16 nearer = _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
+        const __mmask16 nearer =
+            _mm512_mask_cmp_ps_mask(covered, inverse_w, old_depth, _CMP_NLE_UQ);
         if (nearer) {
             _mm512_mask_storeu_ps(depth + at, nearer, inverse_w);
             _mm512_mask_storeu_ps(weight1 + at, nearer, p1);
@@ -184,8 +197,10 @@ void visibility_small(const RasterTriangle& t, int first_row, int rows, const vo
 void encode(const float* r, const float* g, const float* b, std::size_t count, float gamma,
             std::uint8_t* rgb) {
     // Bytes 0-2, 4-6, 8-10, 12-14 of each 128-bit lane, then zeros.
-    const __m512i squeeze = _mm512_set4_epi32(static_cast<int>(0x80808080u), 0x0e0d0c0a, 0x09080605, 0x04020100);
-    const __m512i together = _mm512_setr_epi32(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 3, 7, 11, 15);
+    const __m512i squeeze =
+        _mm512_set4_epi32(static_cast<int>(0x80808080u), 0x0e0d0c0a, 0x09080605, 0x04020100);
+    const __m512i together =
+        _mm512_setr_epi32(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 3, 7, 11, 15);
     const float* const channels[3] = {r, g, b};
     for (std::size_t i = 0; i < count; i += 16) {
         const std::size_t lanes = count - i < 16 ? count - i : 16;
@@ -193,18 +208,25 @@ void encode(const float* r, const float* g, const float* b, std::size_t count, f
         const auto in = static_cast<__mmask16>((1u << lanes) - 1u);
         __m512i word = _mm512_setzero_si512();
         for (int c = 0; c < 3; ++c) {
-            const Avx512Impl::Batch level =
-                Avx512Impl::to_levels(Avx512Impl::Batch(_mm512_maskz_loadu_ps(in, channels[c] + i)), gamma);
+            const Avx512Impl::Batch level = Avx512Impl::to_levels(
+                Avx512Impl::Batch(_mm512_maskz_loadu_ps(in, channels[c] + i)), gamma);
             word = _mm512_or_si512(word, _mm512_slli_epi32(_mm512_cvttps_epi32(level), 8 * c));
         }
-        const __m512i packed = _mm512_permutexvar_epi32(together, _mm512_shuffle_epi8(word, squeeze));
+        const __m512i packed =
+            _mm512_permutexvar_epi32(together, _mm512_shuffle_epi8(word, squeeze));
         _mm512_mask_storeu_epi8(rgb + 3 * i, (__mmask64{1} << (3 * lanes)) - 1u, packed);
     }
 }
 
 }  // namespace
 
-const Kernels avx512_kernels{"avx512", &Avx512Impl::interpolate, &Avx512Impl::transform_vertices, &Avx512Impl::perspective_weights, &Avx512Impl::shade_phong,
-                             &encode, &visibility_row, &visibility_small};
+const Kernels avx512_kernels{"avx512",
+                             &Avx512Impl::interpolate,
+                             &Avx512Impl::transform_vertices,
+                             &Avx512Impl::perspective_weights,
+                             &Avx512Impl::shade_phong,
+                             &encode,
+                             &visibility_row,
+                             &visibility_small};
 
 }  // namespace litkit::kernels

@@ -57,17 +57,20 @@ struct Impl {
     static constexpr std::size_t width = Batch::size;
 
     template <Reflection R>
-    static void shade_run(std::span<const equations::PreparedLight> lights, const Material& material,
-                          const SurfaceRun& s, const ColorRun& out) {
+    static void shade_run(std::span<const equations::PreparedLight> lights,
+                          const Material& material, const SurfaceRun& s, const ColorRun& out) {
         using namespace equations;
         const MaterialT<Batch> m = splat<Batch>(material);
         const RowRays& rays = *s.rays;
         const Vec3<Batch> eye{Batch(rays.eye[0]), Batch(rays.eye[1]), Batch(rays.eye[2])};
-        const Vec3<Batch> centre{Batch(rays.centre[0]), Batch(rays.centre[1]), Batch(rays.centre[2])};
-        const Vec3<Batch> across{Batch(rays.across[0]), Batch(rays.across[1]), Batch(rays.across[2])};
+        const Vec3<Batch> centre{Batch(rays.centre[0]), Batch(rays.centre[1]),
+                                 Batch(rays.centre[2])};
+        const Vec3<Batch> across{Batch(rays.across[0]), Batch(rays.across[1]),
+                                 Batch(rays.across[2])};
         // k of the lanes after the first: whole numbers, exact in a float.
         alignas(64) float lane_k[width];
-        for (std::size_t lane = 0; lane < width; ++lane) lane_k[lane] = 2.0f * static_cast<float>(lane);
+        for (std::size_t lane = 0; lane < width; ++lane)
+            lane_k[lane] = 2.0f * static_cast<float>(lane);
         const Batch lane_step = Batch::load_aligned(lane_k);
         // Full batches straight from the arrays; the tail through a padded
         // copy. (No float instantiation here: this text is also compiled
@@ -117,7 +120,8 @@ struct Impl {
     }
 
     static void shade_phong(Reflection reflection, std::span<const equations::PreparedLight> lights,
-                            const Material& material, const SurfaceRun& surface, const ColorRun& out) {
+                            const Material& material, const SurfaceRun& surface,
+                            const ColorRun& out) {
         equations::with_reflection(reflection, [&](auto model) {
             shade_run<decltype(model)::value>(lights, material, surface, out);
         });
@@ -145,7 +149,8 @@ struct Impl {
             for (std::size_t j = 0; j < width; ++j) {
                 // Lanes past the end repeat the last vertex; they are not kept.
                 const std::size_t from = i + (j < lanes ? j : lanes - 1);
-                for (int k = 0; k < 3; ++k) in[k][j] = positions[3 * from + static_cast<std::size_t>(k)];
+                for (int k = 0; k < 3; ++k)
+                    in[k][j] = positions[3 * from + static_cast<std::size_t>(k)];
             }
             const Batch x = Batch::load_aligned(in[0]);
             const Batch y = Batch::load_aligned(in[1]);
@@ -169,8 +174,10 @@ struct Impl {
                                   bit(cx + band_w < zero, 4.0f) + bit(band_w - cx < zero, 8.0f) +
                                   bit(cy + band_w < zero, 16.0f) + bit(band_w - cy < zero, 32.0f);
             const Batch inverse_w = Batch(1.0f) / cw;
-            const Batch window_x = rounded(rounded(cx * inverse_w) + Batch(1.0f)) * Batch(half_width);
-            const Batch window_y = rounded(Batch(1.0f) - rounded(cy * inverse_w)) * Batch(half_height);
+            const Batch window_x =
+                rounded(rounded(cx * inverse_w) + Batch(1.0f)) * Batch(half_width);
+            const Batch window_y =
+                rounded(Batch(1.0f) - rounded(cy * inverse_w)) * Batch(half_height);
             // Times subpixel_one (a power of two: exact, as in double, unless
             // it overflows to infinity, which the range test refuses too).
             const Batch fixed_x = window_x * Batch(static_cast<float>(subpixel_one));
@@ -209,8 +216,8 @@ struct Impl {
     }
 
     static void perspective_weights(const float* inverse_w, const float* weight1,
-                                    const float* weight2, std::size_t count, float* w_out, float* q0,
-                                    float* q1, float* q2) {
+                                    const float* weight2, std::size_t count, float* w_out,
+                                    float* q0, float* q1, float* q2) {
         auto block = [&](std::size_t i) {
             // rounded(): q0's subtractions must not fuse with the products.
             const Batch w = Batch(1.0f) / Batch::load_unaligned(inverse_w + i);
@@ -262,7 +269,8 @@ struct Impl {
             }
             span(0, in[0], in[1], in[2], dest);
             for (int k = 0; k < 3; ++k)
-                for (std::size_t lane = 0; i + lane < count; ++lane) outputs[k][i + lane] = result[k][lane];
+                for (std::size_t lane = 0; i + lane < count; ++lane)
+                    outputs[k][i + lane] = result[k][lane];
         }
     }
 
@@ -298,14 +306,16 @@ struct Impl {
                     padded[1][lane] = g[from];
                     padded[2][lane] = b[from];
                 }
-                for (int c = 0; c < 3; ++c) levels[c] = to_levels(Batch::load_aligned(padded[c]), gamma);
+                for (int c = 0; c < 3; ++c)
+                    levels[c] = to_levels(Batch::load_aligned(padded[c]), gamma);
             }
             const Words packed = xsimd::batch_cast<std::int32_t>(levels[0]) |
                                  (xsimd::batch_cast<std::int32_t>(levels[1]) << 8) |
                                  (xsimd::batch_cast<std::int32_t>(levels[2]) << 16);
             packed.store_aligned(words);
             std::uint8_t* out = rgb + 3 * i;
-            for (std::size_t lane = 0; lane + 1 < lanes; ++lane) std::memcpy(out + 3 * lane, &words[lane], 4);
+            for (std::size_t lane = 0; lane + 1 < lanes; ++lane)
+                std::memcpy(out + 3 * lane, &words[lane], 4);
             std::memcpy(out + 3 * (lanes - 1), &words[lanes - 1], 3);
         }
     }

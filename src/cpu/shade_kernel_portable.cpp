@@ -7,9 +7,10 @@ namespace litkit::kernels {
 
 using PortableImpl = detail::Impl<xsimd::default_arch>;
 
-void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], const float weight[3],
-                           std::size_t count, float* depth, const void** visible, const void* triangle,
-                           float* weight1, float* weight2) {
+void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3],
+                           const float weight[3], std::size_t count, float* depth,
+                           const void** visible, const void* triangle, float* weight1,
+                           float* weight2) {
     std::int64_t v0 = v[0], v1 = v[1], v2 = v[2];
     for (std::size_t i = 0; i < count; ++i, v0 += step[0], v1 += step[1], v2 += step[2]) {
         // Screen-space barycentrics scaled by 1/w: their sum is the
@@ -21,13 +22,20 @@ void visibility_row_scalar(const std::int64_t v[3], const std::int64_t step[3], 
         // Depth test on 1/w: larger is nearer (orders like OpenGL's z).
         if (inverse_w <= depth[i]) continue;
         depth[i] = inverse_w;
-        std::memcpy(&visible[i], &triangle, sizeof triangle);  // the caller's pointer type, as bytes
-        weight1[i] = p1;  // divided by 1/w once, when shading
+        std::memcpy(&visible[i], &triangle,
+                    sizeof triangle);  // the caller's pointer type, as bytes
+        weight1[i] = p1;               // divided by 1/w once, when shading
         weight2[i] = p2;
     }
 }
 
-const Kernels portable_kernels{"portable", &PortableImpl::interpolate, &PortableImpl::transform_vertices, &PortableImpl::perspective_weights, &PortableImpl::shade_phong,
-                               &PortableImpl::encode, &visibility_row_scalar, nullptr};
+const Kernels portable_kernels{"portable",
+                               &PortableImpl::interpolate,
+                               &PortableImpl::transform_vertices,
+                               &PortableImpl::perspective_weights,
+                               &PortableImpl::shade_phong,
+                               &PortableImpl::encode,
+                               &visibility_row_scalar,
+                               nullptr};
 
 }  // namespace litkit::kernels

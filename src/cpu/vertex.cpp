@@ -38,8 +38,9 @@ void Pipeline::vertex_stage(int width, int height) {
                                        &clip[begin].x, &window[begin]);
             if (object.shading == Shading::Gouraud) {
                 for (std::size_t i = begin; i < end; ++i)
-                    colors[i] = equations::shade_scalar(object.reflection, lights, object.material,
-                                                        object.positions[i], object.normals[i], eye);
+                    colors[i] =
+                        equations::shade_scalar(object.reflection, lights, object.material,
+                                                object.positions[i], object.normals[i], eye);
             }
         });
         // Flat colours are computed in setup, only for triangles that

@@ -143,8 +143,7 @@ bool gjk_intersect(const Hull& a, const Hull& b) {
     // The hulls' own size sets every tolerance, so the test is free of scale
     // (a scene of 1e-25 is judged as one of 1); two single points compare
     // exactly.
-    const double scale =
-        std::max({a.extent(), b.extent(), std::numeric_limits<double>::min()});
+    const double scale = std::max({a.extent(), b.extent(), std::numeric_limits<double>::min()});
     auto support = [&](const dvec3& d) { return a.support(d) - b.support(-d); };
 
     dvec3 direction = a.centre - b.centre;
@@ -161,9 +160,15 @@ bool gjk_intersect(const Hull& a, const Hull& b) {
         simplex.points[simplex.size++] = w;
         bool enclosed = false;
         switch (simplex.size) {
-            case 2: enclosed = line_case(simplex, direction, scale); break;
-            case 3: enclosed = triangle_case(simplex, direction, scale); break;
-            case 4: enclosed = tetrahedron_case(simplex, direction, scale); break;
+            case 2:
+                enclosed = line_case(simplex, direction, scale);
+                break;
+            case 3:
+                enclosed = triangle_case(simplex, direction, scale);
+                break;
+            case 4:
+                enclosed = tetrahedron_case(simplex, direction, scale);
+                break;
         }
         if (enclosed) return true;
     }

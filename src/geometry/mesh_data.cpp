@@ -20,7 +20,8 @@ namespace {
 
 std::string float_text(float value) {
     char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);  // shortest round-trip
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value);  // shortest round-trip
     return std::string(buffer, result.ptr);
 }
 

@@ -67,20 +67,21 @@ std::size_t face_normals_from(const Mesh& mesh, std::size_t t, std::size_t end, 
             e1[axis] = _mm_sub_pd(lanes(1, axis), a);
             e2[axis] = _mm_sub_pd(lanes(2, axis), a);
         }
-        const __m128d cross[3] = {
-            _mm_sub_pd(_mm_mul_pd(e1[1], e2[2]), _mm_mul_pd(e2[1], e1[2])),
-            _mm_sub_pd(_mm_mul_pd(e1[2], e2[0]), _mm_mul_pd(e2[2], e1[0])),
-            _mm_sub_pd(_mm_mul_pd(e1[0], e2[1]), _mm_mul_pd(e2[0], e1[1]))};
-        const __m128d length = _mm_sqrt_pd(_mm_add_pd(
-            _mm_add_pd(_mm_mul_pd(cross[0], cross[0]), _mm_mul_pd(cross[1], cross[1])),
-            _mm_mul_pd(cross[2], cross[2])));
+        const __m128d cross[3] = {_mm_sub_pd(_mm_mul_pd(e1[1], e2[2]), _mm_mul_pd(e2[1], e1[2])),
+                                  _mm_sub_pd(_mm_mul_pd(e1[2], e2[0]), _mm_mul_pd(e2[2], e1[0])),
+                                  _mm_sub_pd(_mm_mul_pd(e1[0], e2[1]), _mm_mul_pd(e2[0], e1[1]))};
+        const __m128d length = _mm_sqrt_pd(
+            _mm_add_pd(_mm_add_pd(_mm_mul_pd(cross[0], cross[0]), _mm_mul_pd(cross[1], cross[1])),
+                       _mm_mul_pd(cross[2], cross[2])));
         alignas(16) double unit[3][2], lengths[2];
-        for (int axis = 0; axis < 3; ++axis) _mm_store_pd(unit[axis], _mm_div_pd(cross[axis], length));
+        for (int axis = 0; axis < 3; ++axis)
+            _mm_store_pd(unit[axis], _mm_div_pd(cross[axis], length));
         _mm_store_pd(lengths, length);
         for (int lane = 0; lane < 2; ++lane) {
-            out[lane] = !(lengths[lane] > 0.0) || !std::isfinite(lengths[lane])
-                            ? glm::vec3(0.0f)
-                            : glm::vec3(float(unit[0][lane]), float(unit[1][lane]), float(unit[2][lane]));
+            out[lane] =
+                !(lengths[lane] > 0.0) || !std::isfinite(lengths[lane])
+                    ? glm::vec3(0.0f)
+                    : glm::vec3(float(unit[0][lane]), float(unit[1][lane]), float(unit[2][lane]));
         }
         return 2;
     }
@@ -102,8 +103,8 @@ void check_triangle_indices(const Mesh& mesh, const char* function) {
         for (const std::uint32_t corner : triangle) {
             if (corner >= position_count) {
                 throw ArgumentError(std::string(function) + ": triangle index " +
-                                        std::to_string(corner) + " out of range (" +
-                                        std::to_string(position_count) + " positions)");
+                                    std::to_string(corner) + " out of range (" +
+                                    std::to_string(position_count) + " positions)");
             }
         }
     }
@@ -114,8 +115,8 @@ void check_triangle_indices(const Mesh& mesh, const char* function) {
 // The weighted normals of triangle (a, b, c) at its corners; false for a
 // triangle that takes no part (zero area, which includes a zero-length
 // edge, or non-finite).
-bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
-                      const glm::vec3& c, glm::vec3* out, glm::vec3& unit_normal) {
+bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                      glm::vec3* out, glm::vec3& unit_normal) {
     if (weighting == Normals::Mean) {
         // DD9 exactly as before docs/spec.md §9.2: the DD8 normal, in float.
         unit_normal = face_normal(a, b, c);
@@ -133,7 +134,9 @@ bool triangle_weights(Normals weighting, const glm::vec3& a, const glm::vec3& b,
     const glm::dvec3 unit = cross / length;
     unit_normal = glm::vec3(unit);  // face_normal(a, b, c), without computing it again
     switch (weighting) {
-        case Normals::Area: out[0] = out[1] = out[2] = glm::vec3(cross); break;
+        case Normals::Area:
+            out[0] = out[1] = out[2] = glm::vec3(cross);
+            break;
         case Normals::Angle: {
             // θ = atan2(‖e1 × e2‖, e1·e2) at two corners; the third is
             // π minus those (a triangle's angles sum to π), one call fewer.
@@ -287,12 +290,12 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
     } else {
         vertex_of_position = weld(mesh.positions);
         normal_sums.assign(position_count, glm::vec3(0.0f));
-        for_each_weighted_triangle(
-            mesh, weighting, vertex_of_position,
-            [&](std::size_t t, const glm::vec3* weights, const glm::vec3&) {
-                for (int k = 0; k < 3; ++k)
-                    normal_sums[vertex_of_position[mesh.triangles[t][k]]] += weights[k];
-            });
+        for_each_weighted_triangle(mesh, weighting, vertex_of_position,
+                                   [&](std::size_t t, const glm::vec3* weights, const glm::vec3&) {
+                                       for (int k = 0; k < 3; ++k)
+                                           normal_sums[vertex_of_position[mesh.triangles[t][k]]] +=
+                                               weights[k];
+                                   });
     }
 
     std::vector<glm::vec3> normals(position_count);
@@ -304,8 +307,7 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh, Normals weighting,
 
 CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease_angle_degrees) {
     if (!(crease_angle_degrees > 0.0f && crease_angle_degrees <= 180.0f)) {
-        throw ArgumentError("corner_normals: crease angle " +
-                            std::to_string(crease_angle_degrees) +
+        throw ArgumentError("corner_normals: crease angle " + std::to_string(crease_angle_degrees) +
                             " is outside (0, 180] degrees");
     }
     std::vector<std::uint32_t> vertex_of_position =
@@ -382,8 +384,7 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
         for (std::uint32_t at = 0; at < result.split_corners.size(); ++at) {
             const std::uint32_t corner = result.split_corners[at];
             if (!usable[corner / 3]) continue;
-            const std::uint32_t vertex =
-                vertex_of_position[mesh.triangles[corner / 3][corner % 3]];
+            const std::uint32_t vertex = vertex_of_position[mesh.triangles[corner / 3][corner % 3]];
             corners_at_vertex[next[vertex]++] = at;
         }
     }
@@ -423,7 +424,8 @@ std::vector<glm::vec3> corner_normals(const Mesh& mesh, Normals weighting,
     const CreasedNormals creased = creased_normals(mesh, weighting, crease_angle_degrees);
     std::vector<glm::vec3> normals(mesh.triangles.size() * 3);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) normals[3 * t + k] = creased.position_normal(mesh.triangles[t][k]);
+        for (int k = 0; k < 3; ++k)
+            normals[3 * t + k] = creased.position_normal(mesh.triangles[t][k]);
     for (std::size_t at = 0; at < creased.split_corners.size(); ++at)
         normals[creased.split_corners[at]] = creased.split_normals[at];
     return normals;

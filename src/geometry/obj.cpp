@@ -15,9 +15,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/files.hpp"
 #include "geometry/obj_numbers.hpp"
 #include "litkit/error.hpp"
-#include "core/files.hpp"
 #include "litkit/shapes.hpp"
 
 namespace litkit {
@@ -136,7 +136,8 @@ Mesh load_obj(const std::filesystem::path& path) {
             corner_normals.clear();
             for (unsigned int corner = 0; corner < corner_count; ++corner) {
                 const int normal = shape.mesh.indices[next_index].normal_index;
-                corner_normals.push_back(normal >= 0 && static_cast<std::size_t>(normal) < normal_count
+                corner_normals.push_back(normal >= 0 &&
+                                                 static_cast<std::size_t>(normal) < normal_count
                                              ? static_cast<std::uint32_t>(normal)
                                              : missing_file_normal);
                 const int vertex = shape.mesh.indices[next_index++].vertex_index;

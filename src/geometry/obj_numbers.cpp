@@ -24,7 +24,8 @@ std::vector<Word> words_of(std::string_view line) {
         const std::size_t start = at;
         while (at < line.size() && line[at] != ' ' && line[at] != '\t' && line[at] != '\r') ++at;
         if (at > start)
-            words.push_back({line.substr(start, at - start), static_cast<std::uint32_t>(start + 1)});
+            words.push_back(
+                {line.substr(start, at - start), static_cast<std::uint32_t>(start + 1)});
     }
     return words;
 }
@@ -95,7 +96,8 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
             for (std::size_t i = 1; i < words.size() && i <= checked; ++i) {
                 double value = 0;
                 const std::string word(words[i].text);
-                const std::string axis = i - 1 < 4 && *axes[i - 1] ? std::string(" ") + axes[i - 1] : "";
+                const std::string axis =
+                    i - 1 < 4 && *axes[i - 1] ? std::string(" ") + axes[i - 1] : "";
                 bool out_of_range = false;
                 if (!read_number(words[i].text, value, out_of_range) && out_of_range) {
                     fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
@@ -131,7 +133,8 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                 std::uint32_t column = words[i].column;
                 const char* const kinds[] = {"vertex", "texture coordinate", "normal"};
                 const char* const plurals[] = {"vertices", "texture coordinates", "normals"};
-                const long long defined[] = {total.vertices, total.texture_coordinates, total.normals};
+                const long long defined[] = {total.vertices, total.texture_coordinates,
+                                             total.normals};
                 const long long before[] = {seen.vertices, seen.texture_coordinates, seen.normals};
                 for (int part = 0; part < 3; ++part) {
                     const std::size_t slash = corner.find('/');
@@ -139,20 +142,20 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                     if (!index_text.empty() || part == 0) {
                         long long index = 0;
                         if (!read_integer(index_text, index) || index == 0)
-                            fail(column, "face corner '" + std::string(words[i].text) +
-                                             "': '" + std::string(index_text) +
-                                             "' is not a " + kinds[part] + " number (1, 2, … or -1, -2, …)");
+                            fail(column, "face corner '" + std::string(words[i].text) + "': '" +
+                                             std::string(index_text) + "' is not a " + kinds[part] +
+                                             " number (1, 2, … or -1, -2, …)");
                         const bool in_range =
                             index > 0 ? index <= defined[part] : -index <= before[part];
                         if (!in_range) {
                             const std::string face = words.size() >= 4
                                                          ? "face " + std::to_string(face_number)
                                                          : std::string("face");
-                            fail(column, face + " refers to " + kinds[part] + " " +
-                                             std::to_string(index) + ", but the file defines " +
-                                             std::to_string(index > 0 ? defined[part] : before[part]) +
-                                             " " + plurals[part] +
-                                             (index < 0 ? " before it" : ""));
+                            fail(column,
+                                 face + " refers to " + kinds[part] + " " + std::to_string(index) +
+                                     ", but the file defines " +
+                                     std::to_string(index > 0 ? defined[part] : before[part]) +
+                                     " " + plurals[part] + (index < 0 ? " before it" : ""));
                         }
                     }
                     if (slash == std::string_view::npos) break;

@@ -11,8 +11,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <vector>
 #include <utility>
+#include <vector>
 
 namespace litkit {
 
@@ -21,14 +21,14 @@ namespace {
 void require_positive(const char* function, const char* name, float value) {
     if (!(value > 0.0f) || !std::isfinite(value)) {
         throw ArgumentError(std::string(function) + ": " + name +
-                                    " must be a positive number, got " + std::to_string(value));
+                            " must be a positive number, got " + std::to_string(value));
     }
 }
 
 void require_at_least(const char* function, const char* name, int value, int minimum) {
     if (value < minimum) {
         throw ArgumentError(std::string(function) + ": " + name + " must be at least " +
-                                    std::to_string(minimum) + ", got " + std::to_string(value));
+                            std::to_string(minimum) + ", got " + std::to_string(value));
     }
 }
 
@@ -167,8 +167,7 @@ Mesh make_torus(float major_radius, float minor_radius, int segments, int sides)
         // docs/spec.md §6: a thicker tube would pass through the axis and the surface
         // would cross itself.
         throw ArgumentError("make_torus: minor_radius (" + std::to_string(minor_radius) +
-                                    ") must be below major_radius (" +
-                                    std::to_string(major_radius) + ")");
+                            ") must be below major_radius (" + std::to_string(major_radius) + ")");
     }
 
     Mesh mesh;

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "litkit/shapes.hpp"
 #include "litkit/error.hpp"
+#include "litkit/shapes.hpp"
 
 namespace litkit {
 
@@ -196,11 +196,11 @@ std::array<double, patch_order> bernstein(double t) {
 Mesh make_teapot(float size, int subdivisions) {
     if (!(size > 0.0f) || !std::isfinite(size)) {
         throw ArgumentError("make_teapot: size must be a positive number, got " +
-                                    std::to_string(size));
+                            std::to_string(size));
     }
     if (subdivisions < 1) {
         throw ArgumentError("make_teapot: subdivisions must be at least 1, got " +
-                                    std::to_string(subdivisions));
+                            std::to_string(subdivisions));
     }
 
     // Each patch on its own grid of (subdivisions + 1)² points, in our axes,

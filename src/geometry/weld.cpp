@@ -99,7 +99,7 @@ std::uint32_t index_of(GridPoint point) { return static_cast<std::uint32_t>(poin
 // sphere's points): for 0 ≤ v < 2^52, truncation is the floor, exactly.
 double floor_of(double v) {
     return v >= 0.0 && v < 4503599627370496.0 ? static_cast<double>(static_cast<std::int64_t>(v))
-                                               : std::floor(v);
+                                              : std::floor(v);
 }
 
 // Within a cell, sorting by x, y, z orders the points by x for the sweep and
@@ -144,7 +144,8 @@ void sort_by_cell(std::vector<std::uint64_t>& pairs, int key_bits) {
         std::uint32_t next = 0;
         for (std::uint32_t& bucket : start) next += std::exchange(bucket, next);
         const int shift = 32 + pass * radix_bits;
-        for (std::size_t i = 0; i < count; ++i) to[start[(from[i] >> shift) & digit_mask]++] = from[i];
+        for (std::size_t i = 0; i < count; ++i)
+            to[start[(from[i] >> shift) & digit_mask]++] = from[i];
         std::swap(from, to);
     }
     if (from != pairs.data()) std::copy_n(from, count, pairs.data());
@@ -208,7 +209,8 @@ class WeldGrid {
                     if (within < margin || within > 1.0 - margin) near_face[index] = 1;
                 }
             }
-            pairs[index] = std::uint64_t{pack_cell(coordinate[0], coordinate[1], coordinate[2])} << 32 | index;
+            pairs[index] =
+                std::uint64_t{pack_cell(coordinate[0], coordinate[1], coordinate[2])} << 32 | index;
         }
         return all_finite;
     }
@@ -241,7 +243,8 @@ class WeldGrid {
             }
             if (cell_size_ > 0.0) {
                 for (std::size_t point = first; point < kept; ++point)
-                    if (near_face[index_of(points[point])]) near_faces.push_back(static_cast<std::uint32_t>(point));
+                    if (near_face[index_of(points[point])])
+                        near_faces.push_back(static_cast<std::uint32_t>(point));
             }
         }
         points.resize(kept);
@@ -288,9 +291,10 @@ class WeldGrid {
     std::size_t weld_within_cell(std::vector<GridPoint>& points, std::size_t begin, std::size_t end,
                                  std::size_t kept, DisjointSets& sets) const {
         const auto from = points.begin() + static_cast<std::ptrdiff_t>(begin);
-        std::sort(from, points.begin() + static_cast<std::ptrdiff_t>(end), [this](GridPoint a, GridPoint b) {
-            return position_order(position_of(a), position_of(b));
-        });
+        std::sort(from, points.begin() + static_cast<std::ptrdiff_t>(end),
+                  [this](GridPoint a, GridPoint b) {
+                      return position_order(position_of(a), position_of(b));
+                  });
         const std::size_t first = kept;
         points[kept++] = points[begin];
         for (std::size_t i = begin + 1; i < end; ++i) {
@@ -341,10 +345,11 @@ class WeldGrid {
         // The cell's points, found in the points themselves (sorted by
         // cell): a table of cells would be as large as the points, in fresh
         // memory.
-        const auto begin = std::lower_bound(points.begin(), points.end(), cell,
-                                            [](GridPoint p, std::uint32_t c) { return cell_of(p) < c; });
-        const auto end = std::upper_bound(begin, points.end(), cell,
-                                          [](std::uint32_t c, GridPoint p) { return c < cell_of(p); });
+        const auto begin =
+            std::lower_bound(points.begin(), points.end(), cell,
+                             [](GridPoint p, std::uint32_t c) { return cell_of(p) < c; });
+        const auto end = std::upper_bound(
+            begin, points.end(), cell, [](std::uint32_t c, GridPoint p) { return c < cell_of(p); });
         if (begin == end) return;
         const double here_x = position_of(here).x;
         const double lowest_x = here_x - weld_distance_;
@@ -404,7 +409,8 @@ void Welding::make_grid() {
 void Welding::place(std::size_t part) {
     if (!grid_) return;
     const auto [begin, end] = range(part);
-    all_finite_[part] = grid_->place(positions_, begin, end, pairs_.data(), near_face_.data()) ? 1 : 0;
+    all_finite_[part] =
+        grid_->place(positions_, begin, end, pairs_.data(), near_face_.data()) ? 1 : 0;
 }
 
 std::vector<std::uint32_t> Welding::finish() {

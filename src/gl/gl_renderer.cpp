@@ -25,9 +25,9 @@
 #include <vector>
 
 #include "codegen/gl_scene.hpp"
-#include "scene/float_range.hpp"
 #include "litkit/glsl.hpp"
 #include "litkit/validate.hpp"
+#include "scene/float_range.hpp"
 
 namespace litkit {
 
@@ -54,14 +54,19 @@ void require_gl_libraries() {
 }
 
 core::LightData light_data(const equations::PreparedLight& light) {
-    return {static_cast<int>(light.kind), light.radiance,   light.position,
-            light.direction,              light.attenuation, light.cos_cutoff,
-            light.cos_inner,              light.exponent};
+    return {static_cast<int>(light.kind),
+            light.radiance,
+            light.position,
+            light.direction,
+            light.attenuation,
+            light.cos_cutoff,
+            light.cos_inner,
+            light.exponent};
 }
 
 core::MaterialData material_data(const Material& material) {
-    core::MaterialData data{material.color, material.ka, material.kd, material.ks,
-                            material.shininess, {}};
+    core::MaterialData data{material.color, material.ka,        material.kd,
+                            material.ks,    material.shininess, {}};
     for_each_model_parameter(
         [&](const ModelParameter& parameter, const float& value) {
             data.parameters.emplace_back(parameter.key, value);
@@ -81,8 +86,9 @@ int lights_room() {
 
 std::string lights_hint(int lights) {
     if (lights < 16) return "";
-    return " (the scene has " + std::to_string(lights) + " lights; this OpenGL has room for about " +
-           std::to_string(lights_room()) + " in a shader)";
+    return " (the scene has " + std::to_string(lights) +
+           " lights; this OpenGL has room for about " + std::to_string(lights_room()) +
+           " in a shader)";
 }
 
 std::string gl_string(GLenum name) {
@@ -126,7 +132,8 @@ namespace {
 // The camera, background, gamma and framebuffer size of a frame.
 void set_frame(GlRenderer::Impl& gl, const Scene& scene) {
     const Observer& o = scene.observer;
-    const float aspect = static_cast<float>(scene.output.width) / static_cast<float>(scene.output.height);
+    const float aspect =
+        static_cast<float>(scene.output.width) / static_cast<float>(scene.output.height);
     gl.frame.view_projection =
         core::view_projection(o.position, o.look_at, o.up, o.fov_degrees, aspect, o.near, o.far);
     gl.frame.eye = o.position;
@@ -235,15 +242,17 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data = detail::gl_object(object, reflection, shading, normal_options(scene, object),
-                                                            scene.built_meshes.get());
+            const detail::GlObject data =
+                detail::gl_object(object, reflection, shading, normal_options(scene, object),
+                                  scene.built_meshes.get());
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
         }
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
-            gl.items.push_back({gl.programs.at({scene.objects[i].reflection.value_or(scene_reflection),
-                                                scene.objects[i].shading.value_or(scene_shading)}),
-                                &gl.meshes[i], material_data(scene.objects[i].material)});
+            gl.items.push_back(
+                {gl.programs.at({scene.objects[i].reflection.value_or(scene_reflection),
+                                 scene.objects[i].shading.value_or(scene_shading)}),
+                 &gl.meshes[i], material_data(scene.objects[i].material)});
 
         set_frame(gl, scene);
         gl.scene = scene;
@@ -273,17 +282,20 @@ namespace {
 // 128-bit half's four shuffled to twelve bytes, the halves joined into 24.
 // The same bytes; a fifth of the instructions, which at 1920×1080 was most of
 // the frame's own time after OpenGL's (docs/performance.md).
-__attribute__((target("avx2"))) void rgba_row_to_rgb_avx2(const std::uint8_t* from, std::uint8_t* to,
-                                                         std::size_t count) {
-    const __m256i drop_alpha = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1,  //
-                                                0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+__attribute__((target("avx2"))) void rgba_row_to_rgb_avx2(const std::uint8_t* from,
+                                                          std::uint8_t* to, std::size_t count) {
+    const __m256i drop_alpha =
+        _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1,  //
+                         0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
     const __m256i join = _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 7, 7);
     std::size_t x = 0;
     for (; x + 8 <= count; x += 8) {
         const __m256i rgba = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(from + 4 * x));
-        const __m256i rgb = _mm256_permutevar8x32_epi32(_mm256_shuffle_epi8(rgba, drop_alpha), join);
+        const __m256i rgb =
+            _mm256_permutevar8x32_epi32(_mm256_shuffle_epi8(rgba, drop_alpha), join);
         _mm_storeu_si128(reinterpret_cast<__m128i*>(to + 3 * x), _mm256_castsi256_si128(rgb));
-        _mm_storel_epi64(reinterpret_cast<__m128i*>(to + 3 * x + 16), _mm256_extracti128_si256(rgb, 1));
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(to + 3 * x + 16),
+                         _mm256_extracti128_si256(rgb, 1));
     }
     if (x < count) core::OffscreenTarget::rgba_row_to_rgb(from + 4 * x, to + 3 * x, count - x);
 }
@@ -297,8 +309,8 @@ using ConvertRow = core::OffscreenTarget::ConvertRow;
 // rows and bytes as read_rgb; the helper only hides the conversion, which
 // took longer than the reading (docs/performance.md). False when no helper
 // thread could be started (the caller reads as before).
-bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb, ConvertRow convert_row,
-                      std::vector<std::uint8_t> (&buffers)[2]) {
+bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb,
+                      ConvertRow convert_row, std::vector<std::uint8_t> (&buffers)[2]) {
     const int band_count = target.band_count();
     for (auto& buffer : buffers) buffer.resize(target.band_bytes());
     std::atomic<int> read{-1};       // the last band read into its buffer
@@ -351,8 +363,9 @@ void GlRenderer::render_into(Image& image) {
     if (image.width != gl.target->width() || image.height != gl.target->height())
         image = Image(gl.target->width(), gl.target->height());
 #if defined(__x86_64__) || defined(__i386__)
-    static const auto convert_row = __builtin_cpu_supports("avx2") ? rgba_row_to_rgb_avx2
-                                                                   : core::OffscreenTarget::rgba_row_to_rgb;
+    static const auto convert_row = __builtin_cpu_supports("avx2")
+                                        ? rgba_row_to_rgb_avx2
+                                        : core::OffscreenTarget::rgba_row_to_rgb;
 #else
     constexpr auto convert_row = core::OffscreenTarget::rgba_row_to_rgb;
 #endif

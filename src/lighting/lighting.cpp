@@ -69,7 +69,8 @@ std::optional<LightKind> parse_light_kind(std::string_view text) {
     std::optional<LightKind> kind;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ((light_kind_names[I] == text ? (void)kind.emplace(std::in_place_index<I>) : void()), ...);
-    }(std::make_index_sequence<light_kind_names.size()>());
+    }
+    (std::make_index_sequence<light_kind_names.size()>());
     return kind;
 }
 

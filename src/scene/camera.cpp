@@ -46,7 +46,8 @@ RowRays Camera::row_rays(int j) const {
 glm::vec3 ray_direction(const RowRays& rays, int width, int i) {
     const float k = pixel_k(i, width);
     glm::vec3 d;
-    for (int c = 0; c < 3; ++c) d[c] = direction_coordinate(rays.centre[c], rays.across[c], k, as_is);
+    for (int c = 0; c < 3; ++c)
+        d[c] = direction_coordinate(rays.centre[c], rays.across[c], k, as_is);
     return d;
 }
 

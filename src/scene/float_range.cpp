@@ -39,8 +39,8 @@ struct ScaleShape {
 }  // namespace
 
 float float_safe_length_scale(const Scene& scene) {
-    const double extent = std::max({double(scene.room.width), double(scene.room.height),
-                                    double(scene.room.depth)});
+    const double extent =
+        std::max({double(scene.room.width), double(scene.room.height), double(scene.room.depth)});
     if (!(extent > 0.0) || !std::isfinite(extent)) return 1.0f;
     if (extent >= smallest_unscaled_room && extent <= largest_unscaled_room) return 1.0f;
     int exponent = 0;

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <system_error>
 
@@ -47,7 +47,8 @@ std::string read_bytes(const fs::path& path) { return read_file_limited(path); }
 // double. Every other direction is left exactly as written.
 glm::vec3 unit_if_needed(const glm::vec3& direction) {
     const float squared = glm::dot(direction, direction);
-    if (squared >= std::numeric_limits<float>::min() && squared <= std::numeric_limits<float>::max())
+    if (squared >= std::numeric_limits<float>::min() &&
+        squared <= std::numeric_limits<float>::max())
         return direction;
     const glm::dvec3 d(direction);
     const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
@@ -78,7 +79,8 @@ Scene build_scene(std::span<const ParsedFile> files,
     // The value and geometry rules (validate.hpp) run too, so that one run
     // reports every problem; entities with shape errors hold defaults in
     // place of their bad values and are left out of the geometric checks.
-    for (Diagnostic& diagnostic : validate_scene(scene, reader.broken_entities(), triangle_budget)) {
+    for (Diagnostic& diagnostic :
+         validate_scene(scene, reader.broken_entities(), triangle_budget)) {
         if (diagnostic.severity == Severity::Warning)
             scene.warnings.push_back(std::move(diagnostic));
         else

@@ -66,31 +66,31 @@ void check_nesting(std::string_view text, const std::string& name) {
             continue;
         }
         switch (c) {
-        case '[':  // an array in a value, else a table header
-        case '{':
-            open += c;
-            dots = 0;
-            if (c == '{') in_value = false;  // keys follow
-            break;
-        case ']':
-        case '}':
-            if (!open.empty()) open.pop_back();
-            dots = 0;
-            in_value = !open.empty();
-            break;
-        case '=':
-            in_value = true;
-            dots = 0;
-            break;
-        case ',':  // in an inline table, a key follows; in an array, a value
-            dots = 0;
-            in_value = open.empty() || open.back() == '[';
-            break;
-        case '.':
-            if (!in_value) ++dots;
-            break;
-        default:
-            break;
+            case '[':  // an array in a value, else a table header
+            case '{':
+                open += c;
+                dots = 0;
+                if (c == '{') in_value = false;  // keys follow
+                break;
+            case ']':
+            case '}':
+                if (!open.empty()) open.pop_back();
+                dots = 0;
+                in_value = !open.empty();
+                break;
+            case '=':
+                in_value = true;
+                dots = 0;
+                break;
+            case ',':  // in an inline table, a key follows; in an array, a value
+                dots = 0;
+                in_value = open.empty() || open.back() == '[';
+                break;
+            case '.':
+                if (!in_value) ++dots;
+                break;
+            default:
+                break;
         }
         if (static_cast<int>(open.size()) + dots > max_toml_nesting) fail();
     }

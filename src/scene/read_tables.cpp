@@ -81,17 +81,16 @@ const Family& light_family() {
 }
 
 const Family& object_family() {
-    static const Family family{
-        "object",
-        {"name", "type", "position", "rotation", "scale", "material", "reflection", "shading",
-         "normals", "crease_angle"},
-        {
-            {"cube", {"size"}},
-            {"sphere", {"radius", "segments", "rings"}},
-            {"torus", {"major_radius", "minor_radius", "segments", "sides"}},
-            {"teapot", {"size", "subdivisions"}},
-            {"mesh", {"file"}},
-        }};
+    static const Family family{"object",
+                               {"name", "type", "position", "rotation", "scale", "material",
+                                "reflection", "shading", "normals", "crease_angle"},
+                               {
+                                   {"cube", {"size"}},
+                                   {"sphere", {"radius", "segments", "rings"}},
+                                   {"torus", {"major_radius", "minor_radius", "segments", "sides"}},
+                                   {"teapot", {"size", "subdivisions"}},
+                                   {"mesh", {"file"}},
+                               }};
     return family;
 }
 
@@ -105,9 +104,9 @@ bool SceneReader::claim_table(const Site& root, std::string_view key, const toml
     FileLoc here = location(node.source());
     auto [existing, inserted] = defined_tables_.try_emplace(std::string(key), here);
     if (inserted) return true;
-    error(node.source(), root,
-          "[" + std::string(key) + "] is defined twice: here and at " +
-              existing->second.to_string());
+    error(
+        node.source(), root,
+        "[" + std::string(key) + "] is defined twice: here and at " + existing->second.to_string());
     return false;
 }
 
@@ -214,10 +213,10 @@ void SceneReader::read_lighting(const Site& site) {
     check_keys(site, lighting_keys);
     scene_.reflection = read_enum<Reflection>(site, "reflection", reflection_names(),
                                               "reflection model", parse_reflection);
-    scene_.shading = read_enum<Shading>(site, "shading", shading_names, "shading model",
-                                        parse_shading);
-    scene_.normals =
-        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    scene_.shading =
+        read_enum<Shading>(site, "shading", shading_names, "shading model", parse_shading);
+    scene_.normals = read_enum<Normals>(site, "normals", normals_names, "way of computing normals",
+                                        parse_normals);
     scene_.crease_angle_degrees = read_number(site, "crease_angle");
 }
 
@@ -226,15 +225,16 @@ void SceneReader::read_output(const Site& site) {
     OutputSettings& output = scene_.output;
     if (auto width = read_integer(site, "width")) output.width = *width;
     if (auto height = read_integer(site, "height")) output.height = *height;
-    if (auto background = read_color(site, "background")) output.background = unit_color(*background);
+    if (auto background = read_color(site, "background"))
+        output.background = unit_color(*background);
     if (auto gamma = read_number(site, "gamma")) output.gamma = *gamma;
 }
 
 void SceneReader::read_lights(const Site& root, const toml::node& node) {
     const toml::array* array = node.as_array();
     if (!array) {
-        error(node.source(), root, "lights must be an array of tables ([[lights]]), found " +
-                                       describe(node));
+        error(node.source(), root,
+              "lights must be an array of tables ([[lights]]), found " + describe(node));
         return;
     }
     for (const toml::node& element : *array) {
@@ -252,8 +252,8 @@ void SceneReader::read_lights(const Site& root, const toml::node& node) {
 void SceneReader::read_objects(const Site& root, const toml::node& node) {
     const toml::array* array = node.as_array();
     if (!array) {
-        error(node.source(), root, "objects must be an array of tables ([[objects]]), found " +
-                                       describe(node));
+        error(node.source(), root,
+              "objects must be an array of tables ([[objects]]), found " + describe(node));
         return;
     }
     for (const toml::node& element : *array) {
@@ -329,8 +329,8 @@ void SceneReader::read_object(const Site& site) {
                                               "reflection model", parse_reflection);
     object.shading =
         read_enum<Shading>(site, "shading", shading_names, "shading model", parse_shading);
-    object.normals =
-        read_enum<Normals>(site, "normals", normals_names, "way of computing normals", parse_normals);
+    object.normals = read_enum<Normals>(site, "normals", normals_names, "way of computing normals",
+                                        parse_normals);
     object.crease_angle_degrees = read_number(site, "crease_angle");
     read_material(site, object.material);
     if (!type) return;
@@ -389,7 +389,8 @@ void SceneReader::read_material(const Site& object_site, Material& material) {
     for_each_model_parameter(
         [&](const ModelParameter& parameter, float& value) {
             if (parameter.whole) {
-                if (auto whole = read_integer(site, parameter.key)) value = static_cast<float>(*whole);
+                if (auto whole = read_integer(site, parameter.key))
+                    value = static_cast<float>(*whole);
             } else if (auto number = read_number(site, parameter.key)) {
                 value = *number;
             }

@@ -194,7 +194,8 @@ std::optional<Rgb8> SceneReader::read_color(const Site& site, std::string_view k
         }
         Rgb8 color{};
         for (std::size_t i = 0; i < 3; ++i)
-            color[i] = static_cast<std::uint8_t>(std::stoi(value.substr(1 + 2 * i, 2), nullptr, 16));
+            color[i] =
+                static_cast<std::uint8_t>(std::stoi(value.substr(1 + 2 * i, 2), nullptr, 16));
         return color;
     }
     const toml::array* array = node->as_array();
@@ -258,8 +259,7 @@ std::optional<std::string_view> SceneReader::read_choice(const Site& site, std::
 const toml::table* SceneReader::as_table(const toml::node& node, const Site& site,
                                          std::string_view key) {
     if (const toml::table* table = node.as_table()) return table;
-    error(node.source(), site,
-          key_name(site, key) + " must be a table, found " + describe(node));
+    error(node.source(), site, key_name(site, key) + " must be a table, found " + describe(node));
     return nullptr;
 }
 

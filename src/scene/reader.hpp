@@ -70,8 +70,8 @@ struct Family {
 
 // One scene file, parsed.
 struct ParsedFile {
-    std::string name;  // as given, for messages
-    std::filesystem::path folder;   // resolves relative mesh paths
+    std::string name;              // as given, for messages
+    std::filesystem::path folder;  // resolves relative mesh paths
     toml::table root;
 };
 
@@ -88,7 +88,7 @@ struct Site {
 std::string describe(const toml::node& node);
 
 class SceneReader {
-public:
+  public:
     explicit SceneReader(Scene& scene) : scene_(scene) {}
 
     void read_file(const ParsedFile& file);
@@ -96,7 +96,7 @@ public:
     std::vector<Diagnostic> take_diagnostics() { return std::move(diagnostics_); }
     const BrokenEntities& broken_entities() const { return broken_; }
 
-private:
+  private:
     void check_far_beyond_near(const Site& site);
 
     // Reporting.

@@ -49,21 +49,23 @@ bool same_shape(const Shape& a, const Shape& b) {
         [&](const auto& shape) {
             using S = std::decay_t<decltype(shape)>;
             const S& other = std::get<S>(b);
-            if constexpr (std::is_same_v<S, CubeShape>) return shape.size == other.size;
+            if constexpr (std::is_same_v<S, CubeShape>)
+                return shape.size == other.size;
             else if constexpr (std::is_same_v<S, SphereShape>)
                 return shape.radius == other.radius && shape.segments == other.segments &&
                        shape.rings == other.rings;
             else if constexpr (std::is_same_v<S, TorusShape>)
                 return shape.major_radius == other.major_radius &&
-                       shape.minor_radius == other.minor_radius && shape.segments == other.segments &&
-                       shape.sides == other.sides;
+                       shape.minor_radius == other.minor_radius &&
+                       shape.segments == other.segments && shape.sides == other.sides;
             else if constexpr (std::is_same_v<S, TeapotShape>)
                 return shape.size == other.size && shape.subdivisions == other.subdivisions;
             else if constexpr (std::is_same_v<S, MeshFileShape>)
                 return shape.file == other.file;
             else
                 return shape.mesh == other.mesh ||
-                       (shape.mesh && other.mesh && shape.mesh->positions == other.mesh->positions &&
+                       (shape.mesh && other.mesh &&
+                        shape.mesh->positions == other.mesh->positions &&
                         shape.mesh->triangles == other.mesh->triangles);
         },
         a);
@@ -116,7 +118,9 @@ Mesh object_mesh(const SceneObject& object) {
 }
 
 void BuiltMeshes::keep(const Shape& shape, Mesh mesh) {
-    if (std::holds_alternative<MeshFileShape>(shape) || std::holds_alternative<MeshDataShape>(shape)) return;
+    if (std::holds_alternative<MeshFileShape>(shape) ||
+        std::holds_alternative<MeshDataShape>(shape))
+        return;
     const std::lock_guard lock(mutex_);
     entries_.emplace_front(shape, std::move(mesh));
     if (entries_.size() > capacity) entries_.pop_back();
@@ -190,7 +194,8 @@ void split_by_corner_normals(Mesh& mesh, const std::vector<glm::vec3>& normals_o
     normals.assign(mesh.positions.size(), glm::vec3(0.0f));
     CornerSplitter splitter(mesh, normals);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) splitter.assign(mesh.triangles[t][k], normals_of_corners[3 * t + k]);
+        for (int k = 0; k < 3; ++k)
+            splitter.assign(mesh.triangles[t][k], normals_of_corners[3 * t + k]);
 }
 
 // split_by_corner_normals for crease normals, touching only the corners at
@@ -202,7 +207,8 @@ void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm
     normals.assign(mesh.positions.size(), glm::vec3(0.0f));
     for (const auto& triangle : mesh.triangles)  // positions no triangle uses stay zero
         for (const std::uint32_t corner : triangle)
-            if (!creased.position_may_split(corner)) normals[corner] = creased.position_normal(corner);
+            if (!creased.position_may_split(corner))
+                normals[corner] = creased.position_normal(corner);
     CornerSplitter splitter(mesh, normals);
     for (std::size_t at = 0; at < creased.split_corners.size(); ++at) {
         const std::uint32_t corner = creased.split_corners[at];
@@ -235,8 +241,7 @@ Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh
                                      std::size_t triangle) {
     const std::uint32_t face = mesh.triangle_faces[triangle];
     const std::uint32_t line = detail::mesh_format(file.file).line_of_face(file.file, face);
-    return Diagnostic{FileLoc{file.file.string(), line, 0},
-                      Severity::Error,
+    return Diagnostic{FileLoc{file.file.string(), line, 0}, Severity::Error,
                       "face " + std::to_string(face + 1) +
                           " has a corner without a normal (v/vt/vn or v//vn), which "
                           "normals = \"file\" needs"};
@@ -257,8 +262,8 @@ NormalOptions normal_options(const Scene& scene, const SceneObject& object) {
         options.normals = *object.normals;
     } else if (scene.normals) {
         const bool from_file = std::holds_alternative<MeshFileShape>(object.shape);
-        options.normals = *scene.normals == Normals::File && !from_file ? Normals::Mean
-                                                                         : *scene.normals;
+        options.normals =
+            *scene.normals == Normals::File && !from_file ? Normals::Mean : *scene.normals;
     }
     options.crease_angle_degrees =
         object.crease_angle_degrees ? object.crease_angle_degrees : scene.crease_angle_degrees;

@@ -15,9 +15,9 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <unordered_map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 
 #include "geometry/convex.hpp"
 #include "litkit/shapes.hpp"
@@ -151,7 +151,7 @@ const glm::vec3* light_position(const Light& light) {
 }
 
 class Validator {
-public:
+  public:
     Validator(const Scene& scene, const BrokenEntities& broken, std::uint64_t triangle_budget)
         : scene_(scene), broken_(broken), triangle_budget_(triangle_budget) {}
 
@@ -173,7 +173,7 @@ public:
         return std::move(diagnostics_);
     }
 
-private:
+  private:
     void check_values() {
         check_room();
         check_output();
@@ -229,7 +229,8 @@ private:
     }
     // A scene read from a file holds finite numbers only (the reader refuses
     // nan and inf); these catch the ones a scene built in code may hold.
-    bool finite(float value, const std::string& path, const std::string& who, const std::string& key) {
+    bool finite(float value, const std::string& path, const std::string& who,
+                const std::string& key) {
         if (std::isfinite(value)) return true;
         error(path, who, key + " must be a finite number, found " + number_text(value));
         return false;
@@ -249,8 +250,8 @@ private:
     bool inside_room(const glm::vec3& p) const {
         const Room& room = scene_.room;
         const float slack = 1e-5f * std::max({room.width, room.height, room.depth});
-        return std::abs(p.x) <= room.width / 2 + slack && std::abs(p.y) <= room.height / 2 + slack &&
-               std::abs(p.z) <= room.depth / 2 + slack;
+        return std::abs(p.x) <= room.width / 2 + slack &&
+               std::abs(p.y) <= room.height / 2 + slack && std::abs(p.z) <= room.depth / 2 + slack;
     }
     std::string room_text() const {
         const Room& room = scene_.room;
@@ -285,7 +286,8 @@ private:
         finite(output.gamma, "output.gamma", "output", "gamma");
         // Colours are 0–1 (lighting.hpp); a file's 0–255 always is.
         const glm::vec3& b = output.background;
-        if (!(b.x >= 0.0f && b.x <= 1.0f && b.y >= 0.0f && b.y <= 1.0f && b.z >= 0.0f && b.z <= 1.0f))
+        if (!(b.x >= 0.0f && b.x <= 1.0f && b.y >= 0.0f && b.y <= 1.0f && b.z >= 0.0f &&
+              b.z <= 1.0f))
             error("output.background", "output",
                   "background must be 0–1 per channel (litkit::from_rgb8 converts 0–255), found " +
                       vector_text(b));
@@ -295,8 +297,8 @@ private:
     void crease_angle(const std::optional<float>& degrees, const std::string& path,
                       const std::string& who) {
         if (degrees && !(*degrees > 0.0f && *degrees <= 180.0f))
-            error(path, who, "crease_angle must be in (0, 180] degrees, found " +
-                                 number_text(*degrees));
+            error(path, who,
+                  "crease_angle must be in (0, 180] degrees, found " + number_text(*degrees));
     }
 
     void check_lighting() {
@@ -383,7 +385,8 @@ private:
             at_least(spot->exponent, 0.0f, true, base + ".exponent", who, "exponent");
             in_range(spot->penumbra, 0.0f, 1.0f, base + ".penumbra", who, "penumbra");
         }
-        if (const glm::vec3* position = light_position(light); relations_ && position && usable(base)) {
+        if (const glm::vec3* position = light_position(light);
+            relations_ && position && usable(base)) {
             if (room_ok_ && !inside_room(*position))
                 error(base + ".position", who,
                       "position " + vector_text(*position) + " is outside " + room_text());
@@ -486,8 +489,7 @@ private:
 
     void check_names() {
         std::map<std::string, std::string> first_use;  // name → who used it first
-        auto claim = [&](const std::string& name, const std::string& path,
-                         const std::string& who) {
+        auto claim = [&](const std::string& name, const std::string& path, const std::string& who) {
             if (name.empty()) return;
             auto [it, inserted] = first_use.emplace(name, who);
             if (!inserted)
@@ -551,15 +553,16 @@ private:
         const auto* file = std::get_if<MeshFileShape>(&object.shape);
         if (!file && !std::holds_alternative<MeshDataShape>(object.shape)) return;
         if (!is_closed(mesh) || !(signed_volume(mesh) < 0.0)) return;
-        const std::string what =
-            file ? "mesh file '" + file->file.filename().string() + "'" : std::string("in-memory mesh");
+        const std::string what = file ? "mesh file '" + file->file.filename().string() + "'"
+                                      : std::string("in-memory mesh");
         report(Severity::Warning,
                "objects[" + std::to_string(index) + "]" + (file ? ".file" : ".mesh"),
                subject("objects", index, object.name),
-               what + " is inside out: it is closed but its faces wind clockwise seen from "
-                      "outside (negative signed volume), so its outside is culled as back faces "
-                      "and its inside shows; reverse the order of every face's vertices (e.g. "
-                      "\"f 1 2 3\" → \"f 1 3 2\"; Blender: Mesh › Normals › Flip)");
+               what +
+                   " is inside out: it is closed but its faces wind clockwise seen from "
+                   "outside (negative signed volume), so its outside is culled as back faces "
+                   "and its inside shows; reverse the order of every face's vertices (e.g. "
+                   "\"f 1 2 3\" → \"f 1 3 2\"; Blender: Mesh › Normals › Flip)");
     }
 
     // docs/reliability.md: the objects' triangles together, from their
@@ -583,12 +586,14 @@ private:
             largest += object_label(scene_.objects[sizes[k].second], sizes[k].second) + " " +
                        grouped(sizes[k].first);
         }
-        if (sizes.size() > named) largest += " and " + std::to_string(sizes.size() - named) + " more";
+        if (sizes.size() > named)
+            largest += " and " + std::to_string(sizes.size() - named) + " more";
         const std::size_t biggest = sizes.front().second;
         error("objects[" + std::to_string(biggest) + "]",
               subject("objects", biggest, scene_.objects[biggest].name),
-              "the objects need " + grouped(total) + " triangles together, more than the budget of " +
-                  grouped(triangle_budget_) + " (" + largest +
+              "the objects need " + grouped(total) +
+                  " triangles together, more than the budget of " + grouped(triangle_budget_) +
+                  " (" + largest +
                   "); lower their tessellation, or raise the budget with --max-triangles "
                   "(docs/reliability.md)");
         return false;
@@ -653,9 +658,9 @@ private:
 
     void check_warnings() {
         if (scene_.lights.empty())
-            diagnostics_.push_back(Diagnostic{
-                scene_file(), Severity::Warning,
-                "the scene has no lights: every object will be black"});
+            diagnostics_.push_back(
+                Diagnostic{scene_file(), Severity::Warning,
+                           "the scene has no lights: every object will be black"});
         if (scene_.objects.empty())
             diagnostics_.push_back(Diagnostic{scene_file(), Severity::Warning,
                                               "the scene has no objects: the image will be empty"});
@@ -705,7 +710,7 @@ private:
 }  // namespace
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken,
-                                      std::uint64_t triangle_budget) {
+                                       std::uint64_t triangle_budget) {
     return Validator(scene, broken, triangle_budget).run();
 }
 
@@ -718,7 +723,8 @@ std::vector<Diagnostic> validate_scene(const Scene& scene, std::uint64_t triangl
 }
 
 void check_renderable(const Scene& scene) {
-    std::vector<Diagnostic> errors = Validator(scene, {}, default_triangle_budget).run_values_only();
+    std::vector<Diagnostic> errors =
+        Validator(scene, {}, default_triangle_budget).run_values_only();
     if (!errors.empty()) throw SceneError(std::move(errors));
 }
 

@@ -20,7 +20,7 @@ namespace litkit {
 using BrokenEntities = std::set<std::string, std::less<>>;
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const BrokenEntities& broken,
-                                      std::uint64_t triangle_budget = default_triangle_budget);
+                                       std::uint64_t triangle_budget = default_triangle_budget);
 
 // docs/spec.md §9.2, normals = "file": the error for a face corner of a mesh
 // file without a normal, located at that face's line in the mesh file; and

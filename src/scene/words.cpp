@@ -57,8 +57,8 @@ std::optional<std::string_view> closest_word(std::string_view word,
         }
         return count == 1 ? found : std::nullopt;
     };
-    if (auto completion = unique_match(
-            [&](std::string_view candidate) { return candidate.starts_with(folded); }))
+    if (auto completion =
+            unique_match([&](std::string_view candidate) { return candidate.starts_with(folded); }))
         return completion;
 
     const std::size_t allowed = folded.size() <= 3 ? 1 : 2;

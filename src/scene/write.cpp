@@ -33,7 +33,8 @@ std::string color(const glm::vec3& unit) {
 }
 
 std::string rgb8(const Rgb8& c) {
-    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + "]";
+    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+           "]";
 }
 
 // A TOML basic string: quotes, backslashes and control characters escaped.
@@ -72,10 +73,11 @@ std::string light_text(const SceneLight& scene_light) {
                         "\nattenuation = " + vec3(kind.attenuation) + "\n";
             } else {
                 text += "position = " + vec3(kind.position) +
-                        "\nattenuation = " + vec3(kind.attenuation) + "\ndirection = " +
-                        vec3(kind.direction) + "\ncutoff = " + number(kind.cutoff_degrees) +
-                        "\nexponent = " + number(kind.exponent) + "\npenumbra = " +
-                        number(kind.penumbra) + "\n";
+                        "\nattenuation = " + vec3(kind.attenuation) +
+                        "\ndirection = " + vec3(kind.direction) +
+                        "\ncutoff = " + number(kind.cutoff_degrees) +
+                        "\nexponent = " + number(kind.exponent) +
+                        "\npenumbra = " + number(kind.penumbra) + "\n";
             }
         },
         light.kind);
@@ -105,7 +107,8 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
                         "\nsubdivisions = " + std::to_string(shape.subdivisions) + "\n";
             } else if constexpr (std::is_same_v<S, MeshDataShape>) {
                 throw ArgumentError(
-                    (object.name.empty() ? std::string("an object") : "object '" + object.name + "'") +
+                    (object.name.empty() ? std::string("an object")
+                                         : "object '" + object.name + "'") +
                     " has an in-memory mesh, which a scene file cannot hold: write it as an OBJ "
                     "file (litkit::mesh_to_obj) and use a MeshFileShape that names the file");
             } else {
@@ -120,15 +123,19 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
             }
         },
         object.shape);
-    text += "position = " + vec3(object.position) + "\nrotation = " + vec3(object.rotation_degrees) +
-            "\nscale = " + number(object.scale) + "\n";
+    text += "position = " + vec3(object.position) +
+            "\nrotation = " + vec3(object.rotation_degrees) + "\nscale = " + number(object.scale) +
+            "\n";
     if (object.normals) text += "normals = \"" + std::string(to_string(*object.normals)) + "\"\n";
-    if (object.crease_angle_degrees) text += "crease_angle = " + number(*object.crease_angle_degrees) + "\n";
-    if (object.reflection) text += "reflection = \"" + std::string(to_string(*object.reflection)) + "\"\n";
+    if (object.crease_angle_degrees)
+        text += "crease_angle = " + number(*object.crease_angle_degrees) + "\n";
+    if (object.reflection)
+        text += "reflection = \"" + std::string(to_string(*object.reflection)) + "\"\n";
     if (object.shading) text += "shading = \"" + std::string(to_string(*object.shading)) + "\"\n";
     const Material& m = object.material;
     text += "material = { color = " + color(m.color) + ", ka = " + number(m.ka) +
-            ", kd = " + number(m.kd) + ", ks = " + number(m.ks) + ", shininess = " + number(m.shininess);
+            ", kd = " + number(m.kd) + ", ks = " + number(m.ks) +
+            ", shininess = " + number(m.shininess);
     for_each_model_parameter(
         [&](const ModelParameter& parameter, const float& value) {
             text += ", " + std::string(parameter.key) + " = " +
@@ -141,24 +148,27 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
 }  // namespace
 
 std::string scene_to_toml(const Scene& scene, const std::filesystem::path& written_as) {
-    const std::filesystem::path folder = written_as.empty() ? std::filesystem::path() : written_as.parent_path();
+    const std::filesystem::path folder =
+        written_as.empty() ? std::filesystem::path() : written_as.parent_path();
     std::string text = "# litkit scene\n\n[room]\nwidth = " + number(scene.room.width) +
-                       "\nheight = " + number(scene.room.height) + "\ndepth = " +
-                       number(scene.room.depth) + "\n";
+                       "\nheight = " + number(scene.room.height) +
+                       "\ndepth = " + number(scene.room.depth) + "\n";
     const Observer& o = scene.observer;
     text += "\n[observer]\nposition = " + vec3(o.position) + "\nlook_at = " + vec3(o.look_at) +
-            "\nup = " + vec3(o.up) + "\nfov = " + number(o.fov_degrees) + "\nnear = " +
-            number(o.near) + "\nfar = " + number(o.far) + "\n";
+            "\nup = " + vec3(o.up) + "\nfov = " + number(o.fov_degrees) +
+            "\nnear = " + number(o.near) + "\nfar = " + number(o.far) + "\n";
     if (scene.reflection || scene.shading || scene.normals || scene.crease_angle_degrees) {
         text += "\n[lighting]\n";
-        if (scene.reflection) text += "reflection = \"" + std::string(to_string(*scene.reflection)) + "\"\n";
+        if (scene.reflection)
+            text += "reflection = \"" + std::string(to_string(*scene.reflection)) + "\"\n";
         if (scene.shading) text += "shading = \"" + std::string(to_string(*scene.shading)) + "\"\n";
         if (scene.normals) text += "normals = \"" + std::string(to_string(*scene.normals)) + "\"\n";
         if (scene.crease_angle_degrees)
             text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
     }
-    text += "\n[output]\nwidth = " + std::to_string(scene.output.width) + "\nheight = " +
-            std::to_string(scene.output.height) + "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +
+    text += "\n[output]\nwidth = " + std::to_string(scene.output.width) +
+            "\nheight = " + std::to_string(scene.output.height) +
+            "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +
             "\ngamma = " + number(scene.output.gamma) + "\n";
     for (const SceneLight& light : scene.lights) text += light_text(light);
     for (const SceneObject& object : scene.objects) text += object_text(object, folder);

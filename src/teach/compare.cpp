@@ -88,9 +88,8 @@ CompareGrid compare_models(const Scene& scene, const CompareOptions& options) {
     const long long width = grid.left_margin + static_cast<long long>(columns) * grid.tile_width;
     const long long height = grid.top_margin + static_cast<long long>(rows) * grid.tile_height;
     if (width > 65535 || height > 65535)
-        throw ArgumentError("compare_models: the grid would be " + std::to_string(width) +
-                                    "x" + std::to_string(height) +
-                                    " pixels; make the tiles smaller");
+        throw ArgumentError("compare_models: the grid would be " + std::to_string(width) + "x" +
+                            std::to_string(height) + " pixels; make the tiles smaller");
     grid.image = Image(static_cast<int>(width), static_cast<int>(height));
     for (std::size_t i = 0; i < grid.image.rgb.size(); i += 3)
         std::copy(margin_color.begin(), margin_color.end(),

@@ -162,8 +162,9 @@ std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
             text += "  I = w0 * I0 + w1 * I1 + w2 * I2\n";
             break;
         case Shading::Faceted:
-            text += "faceted shading (docs/spec.md §9.2): lit at the pixel, p interpolated from the\n"
-                    "corners with the weights, N the face normal\n";
+            text +=
+                "faceted shading (docs/spec.md §9.2): lit at the pixel, p interpolated from the\n"
+                "corners with the weights, N the face normal\n";
             text += evaluation_lines(e.evaluations.at(0), scene, material, "  ");
             break;
         default:
@@ -191,7 +192,7 @@ std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
                                     "]";
         out += ", \"object\": " +
                json::string(e.object_name.empty() ? "objects[" + std::to_string(e.object) + "]"
-                                                 : e.object_name) +
+                                                  : e.object_name) +
                ", \"object_index\": " + std::to_string(e.object) +
                ", \"triangle\": " + std::to_string(e.triangle) +
                ", \"reflection\": " + json::string(std::string(to_string(e.reflection))) +

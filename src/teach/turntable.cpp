@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "litkit/error.hpp"
 
 namespace litkit {
 

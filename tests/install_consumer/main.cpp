@@ -67,9 +67,10 @@ int main() {
     // A bad scene, from a file's text and from code: one catch for both.
     int caught = 0;
     try {
-        litkit::parse_scene("[room]\nwidth = -10\nheight = 10\ndepth = 10\n"
-                            "[observer]\nposition = [0, 0, 4]\n",
-                            "bad.toml");
+        litkit::parse_scene(
+            "[room]\nwidth = -10\nheight = 10\ndepth = 10\n"
+            "[observer]\nposition = [0, 0, 4]\n",
+            "bad.toml");
     } catch (const litkit::Error& error) {
         // "bad.toml:2:9: error: room: width must be > 0, found -10"
         const litkit::FileLoc& where = error.location();
@@ -81,7 +82,8 @@ int main() {
         scene.output.width = 0;
         litkit::render(scene);
     } catch (const litkit::Error& error) {
-        std::printf("caught: %s\n", error.what());  // "error: output: width must be 1–16384, found 0"
+        std::printf("caught: %s\n",
+                    error.what());  // "error: output: width must be 1–16384, found 0"
         ++caught;
     }
     return caught == 2 ? 0 : 1;

@@ -38,7 +38,8 @@ std::string shortest(T value) {
     constexpr int max_digits = sizeof(T) == sizeof(float) ? 9 : 17;
     char scientific[48];
     for (int digits = 1; digits <= max_digits; ++digits) {
-        std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1, static_cast<double>(value));
+        std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1,
+                      static_cast<double>(value));
         if (read_back<T>(scientific) == value) break;
     }
     // "d.ddde±xx" → the digits without the point, and the exponent.
@@ -82,7 +83,8 @@ std::to_chars_result to_chars(char* first, char* last, T value) {
     } else {
         text = (value < 0 ? "-" : "") + shortest<T>(value < 0 ? -value : value);
     }
-    if (text.size() > static_cast<std::size_t>(last - first)) return {last, std::errc::value_too_large};
+    if (text.size() > static_cast<std::size_t>(last - first))
+        return {last, std::errc::value_too_large};
     std::memcpy(first, text.data(), text.size());
     return {first + text.size(), std::errc()};
 }

@@ -52,11 +52,10 @@ namespace json = litkit::json;
 
 std::string json_diagnostic(const litkit::Diagnostic& d) {
     return "{\"line\":" + std::to_string(d.location.line) +
-           ",\"column\":" + std::to_string(d.location.column) +
-           ",\"severity\":" +
+           ",\"column\":" + std::to_string(d.location.column) + ",\"severity\":" +
            json::string(d.severity == litkit::Severity::Error ? "error" : "warning") +
-           ",\"message\":" + json::string(d.message) +
-           ",\"text\":" + json::string(d.to_string()) + "}";
+           ",\"message\":" + json::string(d.message) + ",\"text\":" + json::string(d.to_string()) +
+           "}";
 }
 
 std::string json_diagnostics(const std::vector<litkit::Diagnostic>& list) {
@@ -75,11 +74,18 @@ std::string json_vec3(const glm::vec3& v) {
 // Where each value the sliders change is written in the text (line, column
 // of the value; absent: the key is not in the text).
 std::string json_locations(const litkit::Scene& scene) {
-    static const char* const paths[] = {
-        "objects[0]", "objects[0].material", "objects[0].material.color",
-        "objects[0].material.ka", "objects[0].material.kd", "objects[0].material.ks",
-        "objects[0].material.shininess", "lights[0]", "lights[0].intensity",
-        "lights[0].position", "lighting", "room"};
+    static const char* const paths[] = {"objects[0]",
+                                        "objects[0].material",
+                                        "objects[0].material.color",
+                                        "objects[0].material.ka",
+                                        "objects[0].material.kd",
+                                        "objects[0].material.ks",
+                                        "objects[0].material.shininess",
+                                        "lights[0]",
+                                        "lights[0].intensity",
+                                        "lights[0].position",
+                                        "lighting",
+                                        "room"};
     std::string out = "{";
     for (const char* path : paths) {
         const auto found = scene.locations.find(path);
@@ -99,8 +105,8 @@ std::string json_values(const litkit::Scene& scene) {
         const litkit::Material& m = scene.objects[0].material;
         out += ",\"material\":{\"color\":" + json_vec3(m.color * 255.0f) +
                ",\"ka\":" + json::number(m.ka) + ",\"kd\":" + json::number(m.kd) +
-               ",\"ks\":" + json::number(m.ks) +
-               ",\"shininess\":" + json::number(m.shininess) + "}";
+               ",\"ks\":" + json::number(m.ks) + ",\"shininess\":" + json::number(m.shininess) +
+               "}";
     }
     if (!scene.lights.empty()) {
         const litkit::Light& light = scene.lights[0].light;
@@ -148,8 +154,8 @@ std::string draw(const litkit::Scene& scene) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     to_rgba(s.image, s.rgba);
-    return "\"width\":" + std::to_string(s.image.width) + ",\"height\":" +
-           std::to_string(s.image.height) + ",\"ms\":" + json::number(ms) +
+    return "\"width\":" + std::to_string(s.image.width) +
+           ",\"height\":" + std::to_string(s.image.height) + ",\"ms\":" + json::number(ms) +
            ",\"threads\":" + std::to_string(s.renderer->thread_count());
 }
 
@@ -188,15 +194,15 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_render(const char* text, const char* ref
         const auto start = std::chrono::steady_clock::now();
         litkit::Scene scene = litkit::parse_scene(text, scene_path);
         const double parse_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         const bool lighting_given = scene.reflection && scene.shading;
         choose_models(scene, reflection, shading);
-        std::string answer = "{\"ok\":true," + draw(scene) +
-                             ",\"parse_ms\":" + json::number(parse_ms) +
-                             ",\"warnings\":" + json_diagnostics(scene.warnings) +
-                             ",\"lighting_given\":" + (lighting_given ? "true" : "false") +
-                             ",\"values\":" + json_values(scene) +
-                             ",\"locations\":" + json_locations(scene) + "}";
+        std::string answer =
+            "{\"ok\":true," + draw(scene) + ",\"parse_ms\":" + json::number(parse_ms) +
+            ",\"warnings\":" + json_diagnostics(scene.warnings) +
+            ",\"lighting_given\":" + (lighting_given ? "true" : "false") +
+            ",\"values\":" + json_values(scene) + ",\"locations\":" + json_locations(scene) + "}";
         state().scene = std::move(scene);
         return reply(std::move(answer));
     } catch (const std::exception& e) {
@@ -241,8 +247,8 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_explain(int x, int y) {
         return reply("{\"ok\":true,\"x\":" + std::to_string(x) + ",\"y\":" + std::to_string(y) +
                      ",\"hit\":" + (e.hit ? "true" : "false") + ",\"rgb\":[" +
                      std::to_string(e.rgb[0]) + "," + std::to_string(e.rgb[1]) + "," +
-                     std::to_string(e.rgb[2]) + "],\"text\":" +
-                     json::string(litkit::explanation_text(e, *s.scene)) + "}");
+                     std::to_string(e.rgb[2]) +
+                     "],\"text\":" + json::string(litkit::explanation_text(e, *s.scene)) + "}");
     } catch (const std::exception& e) {
         return reply(failure(e));
     }

@@ -42,8 +42,8 @@ void Screen::show(const litkit::Image& image, int drawable_width, int drawable_h
         width_ = image.width;
         height_ = image.height;
     } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGB,
-                        GL_UNSIGNED_BYTE, image.rgb.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGB, GL_UNSIGNED_BYTE,
+                        image.rgb.data());
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
@@ -53,8 +53,8 @@ void Screen::show(const litkit::Image& image, int drawable_width, int drawable_h
     glClear(GL_COLOR_BUFFER_BIT);
     // Row 0 of the image is the top (docs/spec.md §1); OpenGL's is the
     // bottom: flip while copying, pixel for pixel.
-    glBlitFramebuffer(0, 0, image.width, image.height, 0, drawable_height,
-                      image.width, drawable_height - image.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, image.width, image.height, 0, drawable_height, image.width,
+                      drawable_height - image.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 

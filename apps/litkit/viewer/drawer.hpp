@@ -16,21 +16,21 @@ namespace litkit_cli {
 // Shows an RGB image 1:1 in the window's framebuffer (on the current OpenGL
 // context, which must outlive it).
 class Screen {
-public:
+  public:
     Screen();
     ~Screen();
     Screen(const Screen&) = delete;
     Screen& operator=(const Screen&) = delete;
     void show(const litkit::Image& image, int drawable_width, int drawable_height);
 
-private:
+  private:
     unsigned texture_ = 0, framebuffer_ = 0;  // GLuint
     int width_ = 0, height_ = 0;
 };
 
 // litkit's own renderer: renders into an image that the screen shows.
 class CpuDrawer {
-public:
+  public:
     CpuDrawer(const litkit::Scene& scene, const litkit::RenderOptions& options)
         : renderer_(scene, options) {}
     void update(const litkit::Scene& scene) { renderer_.update(scene); }
@@ -40,14 +40,14 @@ public:
     }
     void snapshot(litkit::Image&) {}  // the image holds the last frame already
 
-private:
+  private:
     litkit::Renderer renderer_;
 };
 
 // OpenGL: draws with the window's own context (the same shaders as `render
 // --backend gl`) straight into the window.
 class GlDrawer {
-public:
+  public:
     GlDrawer(const litkit::Scene& scene, const litkit::RenderOptions& options)
         : renderer_(scene, options, litkit::GlRenderer::CurrentContext{}) {}
     void update(const litkit::Scene& scene) { renderer_.update(scene); }
@@ -55,14 +55,14 @@ public:
     void present(Screen& screen, const litkit::Image& image, int width, int height);
     void snapshot(litkit::Image& image) { renderer_.render_into(image); }
 
-private:
+  private:
     litkit::GlRenderer renderer_;
 };
 
 // The renderer of the backend chosen. A new backend is a class with the
 // functions above, one more alternative here and its case in drawer.cpp.
 class Drawer {
-public:
+  public:
     using Alternatives = std::variant<CpuDrawer, GlDrawer>;
 
     Drawer(litkit::Backend backend, const litkit::Scene& scene, int threads);
@@ -83,7 +83,7 @@ public:
         std::visit([&](auto& drawer) { drawer.snapshot(image); }, drawer_);
     }
 
-private:
+  private:
     Alternatives drawer_;
 };
 

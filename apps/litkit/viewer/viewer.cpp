@@ -5,9 +5,9 @@
 #include "viewer/viewer.hpp"
 
 #include <SDL2/SDL.h>
-#include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
+#include <imgui.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,8 +22,8 @@
 #include <string>
 #include <variant>
 
-#include "litkit/error.hpp"
 #include "core/files.hpp"
+#include "litkit/error.hpp"
 #include "litkit/image.hpp"
 #include "litkit/limits.hpp"
 #include "viewer/drawer.hpp"
@@ -57,11 +57,14 @@ struct Camera {
         offset = glm::vec3(glm::rotate(glm::mat4(1.0f), yaw_radians, up) * glm::vec4(offset, 0.0f));
         const glm::vec3 right = glm::cross(up, offset);
         if (glm::length(right) > 0.0f) {
-            const float angle = std::acos(std::clamp(glm::dot(glm::normalize(offset), up), -1.0f, 1.0f));
+            const float angle =
+                std::acos(std::clamp(glm::dot(glm::normalize(offset), up), -1.0f, 1.0f));
             const float limit = glm::radians(5.0f);
-            const float pitched = std::clamp(angle - pitch_radians, limit, glm::pi<float>() - limit);
-            offset = glm::vec3(glm::rotate(glm::mat4(1.0f), angle - pitched, glm::normalize(right)) *
-                               glm::vec4(offset, 0.0f));
+            const float pitched =
+                std::clamp(angle - pitch_radians, limit, glm::pi<float>() - limit);
+            offset =
+                glm::vec3(glm::rotate(glm::mat4(1.0f), angle - pitched, glm::normalize(right)) *
+                          glm::vec4(offset, 0.0f));
         }
         observer.position = observer.look_at + offset;
     }
@@ -188,9 +191,12 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         };
         auto set_title = [&] {
             const litkit::Scene shown = shown_scene();
-            std::string title = "litkit view - " + options.title + " - " +
-                                std::string(litkit::to_string(shown.reflection.value_or(litkit::default_reflection))) +
-                                " / " + std::string(litkit::to_string(shown.shading.value_or(litkit::default_shading)));
+            std::string title =
+                "litkit view - " + options.title + " - " +
+                std::string(
+                    litkit::to_string(shown.reflection.value_or(litkit::default_reflection))) +
+                " / " +
+                std::string(litkit::to_string(shown.shading.value_or(litkit::default_shading)));
             if (!diagnostics.empty()) title += " - invalid edit, showing the last good scene";
             SDL_SetWindowTitle(window, title.c_str());
         };
@@ -208,17 +214,17 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         while (running) {
             // Wait for something to do: events, the next reload check, or the
             // next turntable step. Nothing is rendered in between.
-            const int timeout =
-                dirty || panel_frames > 0 || options.benchmark_frames > 0 ? 0
-                : turntable || drag_button                                 ? 10
-                : reload_at != never                                       ? 20
-                                                                           : 100;
+            const int timeout = dirty || panel_frames > 0 || options.benchmark_frames > 0 ? 0
+                                : turntable || drag_button                                ? 10
+                                : reload_at != never                                      ? 20
+                                                                                          : 100;
             SDL_Event event;
             bool have = SDL_WaitEventTimeout(&event, timeout) == 1;
             if (have && show_panel) redraw = true;  // the panel answers every event
             while (have) {
-                const bool panel_wants = show_panel && ImGui_ImplSDL2_ProcessEvent(&event) &&
-                                         (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
+                const bool panel_wants =
+                    show_panel && ImGui_ImplSDL2_ProcessEvent(&event) &&
+                    (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
                 switch (event.type) {
                     case SDL_QUIT:
                         running = false;
@@ -230,22 +236,30 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     case SDL_KEYDOWN: {
                         if (show_panel && ImGui::GetIO().WantCaptureKeyboard) break;
                         const SDL_Keycode key = event.key.keysym.sym;
-                        if (key == SDLK_ESCAPE || key == SDLK_q) running = false;
-                        else if (key == SDLK_h) show_panel = !show_panel, redraw = true;
-                        else if (key == SDLK_r) camera.observer = scene.observer, dirty = true;
-                        else if (key == SDLK_SPACE) turntable = !turntable, last_turn = clock_type::now();
-                        else if (key == SDLK_0) key_reflection.reset(), key_shading.reset(), dirty = true;
+                        if (key == SDLK_ESCAPE || key == SDLK_q)
+                            running = false;
+                        else if (key == SDLK_h)
+                            show_panel = !show_panel, redraw = true;
+                        else if (key == SDLK_r)
+                            camera.observer = scene.observer, dirty = true;
+                        else if (key == SDLK_SPACE)
+                            turntable = !turntable, last_turn = clock_type::now();
+                        else if (key == SDLK_0)
+                            key_reflection.reset(), key_shading.reset(), dirty = true;
                         else if (key >= SDLK_1 && key <= SDLK_9) {
                             const auto models = litkit::reflection_models();
                             const std::size_t index = static_cast<std::size_t>(key - SDLK_1);
-                            if (index < models.size()) key_reflection = models[index].id, dirty = true;
+                            if (index < models.size())
+                                key_reflection = models[index].id, dirty = true;
                         } else if (key == SDLK_s) {
                             const fs::path name = next_screenshot_name(
-                                options.files.empty() ? "default" : options.files.front().stem().string());
+                                options.files.empty() ? "default"
+                                                      : options.files.front().stem().string());
                             try {
                                 if (drawer) drawer->snapshot(image);
                                 litkit::write_png(image, name);
-                                std::cout << "litkit: wrote " << name.string() << "\n" << std::flush;
+                                std::cout << "litkit: wrote " << name.string() << "\n"
+                                          << std::flush;
                             } catch (const litkit::Error& error) {
                                 std::cerr << error.what() << "\n";
                             }
@@ -270,15 +284,19 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                             camera.orbit(-0.01f * static_cast<float>(event.motion.xrel),
                                          -0.01f * static_cast<float>(event.motion.yrel));
                         } else {
-                            const float distance = glm::length(camera.observer.position - camera.observer.look_at);
+                            const float distance =
+                                glm::length(camera.observer.position - camera.observer.look_at);
                             int w = 0, h = 0;
                             SDL_GL_GetDrawableSize(window, &w, &h);
-                            const float per_pixel = 2.0f * distance *
-                                std::tan(glm::radians(camera.observer.fov_degrees) / 2.0f) / static_cast<float>(std::max(h, 1));
+                            const float per_pixel =
+                                2.0f * distance *
+                                std::tan(glm::radians(camera.observer.fov_degrees) / 2.0f) /
+                                static_cast<float>(std::max(h, 1));
                             camera.pan(-per_pixel * static_cast<float>(event.motion.xrel),
                                        per_pixel * static_cast<float>(event.motion.yrel));
                         }
-                        if (!inside_room(scene.room, camera.observer.position)) camera.observer = before;
+                        if (!inside_room(scene.room, camera.observer.position))
+                            camera.observer = before;
                         dirty = true;
                         break;
                     }
@@ -303,7 +321,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 if (benchmark_done == 0) benchmark_start = clock_type::now();
                 if (++benchmark_done > options.benchmark_frames) {
                     const double ms = std::chrono::duration<double, std::milli>(clock_type::now() -
-                                                                                benchmark_start).count();
+                                                                                benchmark_start)
+                                          .count();
                     std::printf("orbit: %d frames of %dx%d in %.1f ms: %.1f frames/s\n",
                                 options.benchmark_frames, shown_width, shown_height, ms,
                                 1000.0 * options.benchmark_frames / ms);
@@ -345,7 +364,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     dirty = true;
                 } catch (const litkit::SceneError& error) {
                     diagnostics.clear();
-                    for (const litkit::Diagnostic& d : error.diagnostics()) diagnostics += d.to_string() + "\n";
+                    for (const litkit::Diagnostic& d : error.diagnostics())
+                        diagnostics += d.to_string() + "\n";
                     std::cerr << diagnostics << std::flush;
                 } catch (const litkit::Error& error) {
                     diagnostics = std::string(error.what()) + "\n";
@@ -359,8 +379,10 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 const auto start = clock_type::now();
                 const litkit::Scene shown = shown_scene();
                 try {
-                    if (!drawer) drawer = std::make_unique<Drawer>(options.backend, shown, options.threads);
-                    else drawer->update(shown);
+                    if (!drawer)
+                        drawer = std::make_unique<Drawer>(options.backend, shown, options.threads);
+                    else
+                        drawer->update(shown);
                     drawer->render(image);
                     shown_width = shown.output.width;
                     shown_height = shown.output.height;
@@ -368,7 +390,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     diagnostics = std::string(error.what()) + "\n";
                     std::cerr << diagnostics << std::flush;
                 }
-                frame_ms = std::chrono::duration<double, std::milli>(clock_type::now() - start).count();
+                frame_ms =
+                    std::chrono::duration<double, std::milli>(clock_type::now() - start).count();
                 dirty = false;
                 redraw = true;
                 set_title();
@@ -398,26 +421,33 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     int reflection = key_reflection ? static_cast<int>(*key_reflection) + 1 : 0;
                     std::vector<const char*> names{"(the scene's)"};
                     for (const auto& model : models) names.push_back(model.name.data());
-                    if (ImGui::Combo("reflection", &reflection, names.data(), static_cast<int>(names.size()))) {
-                        key_reflection = reflection == 0 ? std::nullopt
-                                                         : std::optional(static_cast<litkit::Reflection>(reflection - 1));
+                    if (ImGui::Combo("reflection", &reflection, names.data(),
+                                     static_cast<int>(names.size()))) {
+                        key_reflection =
+                            reflection == 0
+                                ? std::nullopt
+                                : std::optional(static_cast<litkit::Reflection>(reflection - 1));
                         dirty = true;
                     }
                     int shading = key_shading ? static_cast<int>(*key_shading) + 1 : 0;
                     std::vector<const char*> shadings{"(the scene's)"};
                     for (int s = 0; s < litkit::shading_count; ++s)
-                        shadings.push_back(litkit::to_string(static_cast<litkit::Shading>(s)).data());
-                    if (ImGui::Combo("shading", &shading, shadings.data(), static_cast<int>(shadings.size()))) {
-                        key_shading = shading == 0 ? std::nullopt
-                                                   : std::optional(static_cast<litkit::Shading>(shading - 1));
+                        shadings.push_back(
+                            litkit::to_string(static_cast<litkit::Shading>(s)).data());
+                    if (ImGui::Combo("shading", &shading, shadings.data(),
+                                     static_cast<int>(shadings.size()))) {
+                        key_shading =
+                            shading == 0 ? std::nullopt
+                                         : std::optional(static_cast<litkit::Shading>(shading - 1));
                         dirty = true;
                     }
                 }
                 edited |= ImGui::SliderFloat("gamma", &scene.output.gamma, 0.2f, 4.0f);
                 for (std::size_t i = 0; i < scene.objects.size(); ++i) {
                     litkit::SceneObject& object = scene.objects[i];
-                    const std::string label = (object.name.empty() ? "objects[" + std::to_string(i) + "]" : object.name) +
-                                              "##object" + std::to_string(i);
+                    const std::string label =
+                        (object.name.empty() ? "objects[" + std::to_string(i) + "]" : object.name) +
+                        "##object" + std::to_string(i);
                     if (!ImGui::TreeNode(label.c_str())) continue;
                     litkit::Material& m = object.material;
                     edited |= ImGui::ColorEdit3("color", &m.color.x);
@@ -430,13 +460,15 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                             const std::string name(parameter.key);
                             if (parameter.whole) {
                                 int whole = static_cast<int>(value);
-                                if (ImGui::SliderInt(name.c_str(), &whole, static_cast<int>(parameter.low),
+                                if (ImGui::SliderInt(name.c_str(), &whole,
+                                                     static_cast<int>(parameter.low),
                                                      static_cast<int>(parameter.high))) {
                                     value = static_cast<float>(whole);
                                     edited = true;
                                 }
                             } else {
-                                edited |= ImGui::SliderFloat(name.c_str(), &value, parameter.low, parameter.high);
+                                edited |= ImGui::SliderFloat(name.c_str(), &value, parameter.low,
+                                                             parameter.high);
                             }
                         },
                         m);
@@ -444,31 +476,40 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 }
                 for (std::size_t i = 0; i < scene.lights.size(); ++i) {
                     litkit::SceneLight& light = scene.lights[i];
-                    const std::string label = (light.name.empty() ? "lights[" + std::to_string(i) + "]" : light.name) +
-                                              "##light" + std::to_string(i);
+                    const std::string label =
+                        (light.name.empty() ? "lights[" + std::to_string(i) + "]" : light.name) +
+                        "##light" + std::to_string(i);
                     if (!ImGui::TreeNode(label.c_str())) continue;
                     edited |= ImGui::SliderFloat("intensity", &light.light.intensity, 0.0f, 100.0f);
                     edited |= ImGui::ColorEdit3("color", &light.light.color.x);
                     std::visit(
                         [&](auto& kind) {
                             using K = std::decay_t<decltype(kind)>;
-                            const float half = std::max({scene.room.width, scene.room.height, scene.room.depth}) / 2;
+                            const float half =
+                                std::max({scene.room.width, scene.room.height, scene.room.depth}) /
+                                2;
                             if constexpr (std::is_same_v<K, litkit::DirectionalLight>) {
                                 edited |= ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
                             } else if constexpr (std::is_same_v<K, litkit::PointLight> ||
                                                  std::is_same_v<K, litkit::SpotLight>) {
                                 glm::vec3 position = kind.position;
-                                if (ImGui::DragFloat3("position", &position.x, 0.02f, -half, half) &&
+                                if (ImGui::DragFloat3("position", &position.x, 0.02f, -half,
+                                                      half) &&
                                     inside_room(scene.room, position)) {
                                     kind.position = position;
                                     edited = true;
                                 }
-                                edited |= ImGui::DragFloat3("attenuation", &kind.attenuation.x, 0.01f, 0.0f, 10.0f);
+                                edited |= ImGui::DragFloat3("attenuation", &kind.attenuation.x,
+                                                            0.01f, 0.0f, 10.0f);
                                 if constexpr (std::is_same_v<K, litkit::SpotLight>) {
-                                    edited |= ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
-                                    edited |= ImGui::SliderFloat("cutoff", &kind.cutoff_degrees, 0.5f, 90.0f);
-                                    edited |= ImGui::SliderFloat("exponent", &kind.exponent, 0.0f, 128.0f);
-                                    edited |= ImGui::SliderFloat("penumbra", &kind.penumbra, 0.0f, 1.0f);
+                                    edited |=
+                                        ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
+                                    edited |= ImGui::SliderFloat("cutoff", &kind.cutoff_degrees,
+                                                                 0.5f, 90.0f);
+                                    edited |= ImGui::SliderFloat("exponent", &kind.exponent, 0.0f,
+                                                                 128.0f);
+                                    edited |=
+                                        ImGui::SliderFloat("penumbra", &kind.penumbra, 0.0f, 1.0f);
                                 }
                             }
                         },
@@ -478,7 +519,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 ImGui::Text("frame %.1f ms, %dx%d", frame_ms, shown_width, shown_height);
                 ImGui::Separator();
                 ImGui::InputText("file", save_path, sizeof save_path);
-                if (ImGui::Button(confirm_overwrite ? "Overwrite" : "Save as...") && save_path[0] != '\0') {
+                if (ImGui::Button(confirm_overwrite ? "Overwrite" : "Save as...") &&
+                    save_path[0] != '\0') {
                     const fs::path path(save_path);
                     if (fs::exists(path) && !confirm_overwrite) {
                         confirm_overwrite = true;
@@ -524,14 +566,15 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
 
 }  // namespace litkit_cli
 
-extern "C" __attribute__((visibility("default"))) const litkit_cli::ViewerModule* litkit_viewer_module() {
+extern "C" __attribute__((visibility("default"))) const litkit_cli::ViewerModule*
+litkit_viewer_module() {
     static constexpr litkit_cli::ViewerModule module{
         litkit_cli::module_stamp<litkit_cli::ViewerModule, litkit_cli::ViewerOptions>(),
         [](const litkit_cli::ViewerOptions& options, litkit::Scene scene,
            litkit_cli::CaughtError& error) noexcept {
             int status = 1;
-            litkit_cli::call_catching([&] { status = litkit_cli::run_viewer(options, std::move(scene)); },
-                                      error);
+            litkit_cli::call_catching(
+                [&] { status = litkit_cli::run_viewer(options, std::move(scene)); }, error);
             return status;
         }};
     return &module;

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "crossing.hpp"
 #include "litkit/backend.hpp"
 #include "litkit/scene.hpp"
-#include "crossing.hpp"
 #include "modules.hpp"
 
 namespace litkit_cli {

@@ -42,8 +42,8 @@ struct FileWatcher::Impl {
     std::vector<fs::path> files;
     std::map<fs::path, Stamp> stamps;  // polling
     int inotify = -1;
-    std::map<int, fs::path> folders;   // watch descriptor → folder
-    std::set<std::string> names;       // file names watched, per any folder
+    std::map<int, fs::path> folders;  // watch descriptor → folder
+    std::set<std::string> names;      // file names watched, per any folder
 
     void start() {
         stamps.clear();

@@ -14,7 +14,7 @@ namespace litkit_cli {
 // still seen); elsewhere, or if inotify fails, it polls each file's size and
 // modification time.
 class FileWatcher {
-public:
+  public:
     explicit FileWatcher(std::vector<std::filesystem::path> files);
     ~FileWatcher();
     FileWatcher(const FileWatcher&) = delete;
@@ -26,7 +26,7 @@ public:
     void watch(std::vector<std::filesystem::path> files);
     bool uses_inotify() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
