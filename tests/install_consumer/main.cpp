@@ -82,8 +82,8 @@ int main() {
         scene.output.width = 0;
         litkit::render(scene);
     } catch (const litkit::Error& error) {
-        std::printf("caught: %s\n",
-                    error.what());  // "error: output: width must be 1–16384, found 0"
+        // "error: output: width must be 1–16384, found 0"
+        std::printf("caught: %s\n", error.what());
         ++caught;
     }
     return caught == 2 ? 0 : 1;
