@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cfenv>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -157,9 +158,23 @@ TEST(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
         EXPECT_EQ(hit.refracted.y, hit.reflected.y);
         EXPECT_EQ(hit.refracted.z, hit.reflected.z);
     }
-    // Exactly grazing, c₁ = 0, both denominators 0 without the guard.
+    // Exactly grazing at η = 1: c₁ = 0 and k = 0, so both Fresnel
+    // denominators are 0; the guard divides by 1 there instead (no 0/0 even
+    // in the lane that select discards: no invalid-operation flag is raised).
+    volatile float one = 1.0f;  // not folded at compile time
+    std::feclearexcept(FE_ALL_EXCEPT);
     const eq::Interface<float> grazing =
-        eq::refract_interface(Vec3<float>{1, 0, 0}, Vec3<float>{0, 1, 0}, 1.0f);
+        eq::refract_interface(Vec3<float>{one, 0, 0}, Vec3<float>{0, one, 0}, float(one));
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID | FE_DIVBYZERO));
+    // The same with a SIMD batch, where select is a blend and both of its
+    // sides are always computed: the guard is what keeps 0/0 away.
+    using Batch = xsimd::batch<float, xsimd::default_arch>;
+    std::feclearexcept(FE_ALL_EXCEPT);
+    const eq::Interface<Batch> grazing_lanes =
+        eq::refract_interface(Vec3<Batch>{Batch(one), Batch(0.0f), Batch(0.0f)},
+                              Vec3<Batch>{Batch(0.0f), Batch(one), Batch(0.0f)}, Batch(float(one)));
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID | FE_DIVBYZERO));
+    EXPECT_TRUE(xsimd::all(grazing_lanes.fresnel == Batch(1.0f)));
     EXPECT_TRUE(grazing.total_internal_reflection);
     EXPECT_EQ(grazing.fresnel, 1.0f);
     EXPECT_FALSE(std::isnan(grazing.refracted.x) || std::isnan(grazing.fresnel));
