@@ -26,8 +26,7 @@ struct Block {
     std::vector<litkit::equations::PreparedLight> lights;
     litkit::Material material;
     // Looking down −z with a 1024-pixel row spanning x ∈ [−1, 1] at z = 0.
-    litkit::RowRays rays{
-        {0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, -1.0f}, {0.25f / 1024.0f, 0.0f, 0.0f}};
+    litkit::RowRays rays{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, -1.0f}, {0.25f / 1024.0f, 0.0f, 0.0f}};
 
     explicit Block(std::size_t count) {
         for (std::size_t i = 0; i < count; ++i) {
