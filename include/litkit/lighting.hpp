@@ -132,11 +132,15 @@ struct Material {
     float ks = 0.5f;
     /// α, the specular exponent (≥ 0) of the models with a highlight.
     float shininess = 32.0f;
-    float sigma = 30.0f;      ///< oren-nayar: surface roughness σ in degrees
-    float roughness = 0.5f;   ///< cook-torrance: perceptual roughness r
-    float f0 = 0.04f;         ///< cook-torrance: reflectance at normal incidence
-    float bands = 3.0f;       ///< toon: how many diffuse levels (a whole number)
-    float minnaert_k = 1.5f;  ///< minnaert: limb darkening k
+    float sigma = 30.0f;        ///< oren-nayar: surface roughness σ in degrees
+    float roughness = 0.5f;     ///< cook-torrance: perceptual roughness r
+    float f0 = 0.04f;           ///< cook-torrance: reflectance at normal incidence
+    float bands = 3.0f;         ///< toon: how many diffuse levels (a whole number)
+    float minnaert_k = 1.5f;    ///< minnaert: limb darkening k
+    float transmission = 0.0f;  ///< docs/spec.md §10: t
+    float ior = 1.5f;           ///< docs/spec.md §10: n_o
+    glm::vec3 absorption_color{1.0f, 1.0f, 1.0f};  ///< docs/spec.md §10: a/255
+    float absorption_distance = 1.0f;              ///< docs/spec.md §10: D
 };
 
 /// One parameter of the models of docs/spec.md §9.1 as scene files name and

@@ -17,6 +17,7 @@
 #include "litkit/lighting.hpp"
 #include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
+#include "litkit/ray_tree.hpp"
 #include "litkit/refraction.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"

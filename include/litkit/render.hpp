@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "litkit/image.hpp"
+#include "litkit/ray_tree.hpp"
 #include "litkit/scene.hpp"
 
 namespace litkit {
@@ -58,6 +59,9 @@ struct PixelProbe {
     glm::vec3 normal{0.0f};     ///< Phong shading: N interpolated, before renormalising
     glm::vec3 intensity{0.0f};  ///< I before clamping and gamma, as shaded
     Rgb8 rgb{};                 ///< the pixel
+    /// The pixel's ray tree where its first surface is glass (t > 0,
+    /// docs/spec.md §10.2), its first node the camera's ray; else empty.
+    std::vector<RayNode> ray_tree;
 };
 
 /// Whether this CPU runs the given set of per-pixel kernels.

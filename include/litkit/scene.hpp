@@ -35,6 +35,7 @@ struct Room {
     float height = 10.0f;
     /// Extent along z (> 0).
     float depth = 10.0f;
+    float ior = 1.0f;  ///< docs/spec.md §10: n_r
 };
 
 /// The narrowest field of view allowed, in degrees (docs/reliability.md):
@@ -193,6 +194,7 @@ struct Scene {
     std::optional<Normals> normals;
     /// The crease angle in degrees, (0, 180], for every object; not given: no crease.
     std::optional<float> crease_angle_degrees;
+    int max_depth = 8;  ///< docs/spec.md §10
     /// The lights, in file order.
     std::vector<SceneLight> lights;
     /// The objects, in file order.

@@ -348,6 +348,7 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
         x = span_end - 1;
     }
     flush();
+    if (ray_tree) refract_row(y, width, begin, end, s);
     if (y == probe_y && probe_x >= begin && probe_x < end && s.visible[offset + probe_x])
         record_probe(s, offset + static_cast<std::size_t>(probe_x), probe_x);
     encode_row(*this, s, offset, begin, end, background_between, width, row);

@@ -16,7 +16,9 @@
 //              across the thread pool
 //   fragment   (fragment.cpp) perspective-correct varyings, lighting per
 //              pixel (Phong; faceted, with the face normal) or interpolated
-//              colours (Gouraud) or one colour (flat), clamp and gamma
+//              colours (Gouraud) or one colour (flat), clamp and gamma;
+//              pixels that see glass get the rest of their light from the
+//              ray tree (glass.cpp, with src/trace/)
 // The stages carry the names of the OpenGL pipeline so that these files
 // and the generated GLSL read alike.
 #pragma once
@@ -27,6 +29,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/thread_pool.hpp"
@@ -35,6 +38,8 @@
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
 #include "scene/camera.hpp"
+#include "trace/accel.hpp"
+#include "trace/ray_tree.hpp"
 
 namespace litkit {
 
@@ -156,6 +161,13 @@ struct Pipeline {
     int probe_x = -1, probe_y = -1;
     mutable PixelProbe probed;
 
+    // The tracer, only while some object has t > 0 (docs/spec.md §10): the
+    // objects as it sees them, the hierarchy over their triangles (kept
+    // while the meshes are) and the ray tree.
+    std::vector<trace::TracedObject> traced;
+    std::unique_ptr<trace::Accel> accel;
+    std::unique_ptr<trace::RayTree> ray_tree;
+
     // The scene as drawn: its lengths brought into a float's comfortable
     // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
     Pipeline(const Scene& s, RenderOptions o);
@@ -165,6 +177,8 @@ struct Pipeline {
     // prepare.cpp: the meshes, then everything else of the scene.
     void prepare();
     void prepare_surfaces();
+    // glass.cpp: the tracer for the scene's glass (or none).
+    void prepare_tracer();
     // render.cpp: the camera, the bands and the background of a frame.
     void begin_frame(int width, int height);
     // vertex.cpp
@@ -181,6 +195,9 @@ struct Pipeline {
     void shade_band(int band, BandScratch& scratch, Image& image) const;
     void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
+    // glass.cpp: the row's pixels that see glass, their local part and the
+    // ray tree's light in place of what shade_row gave them.
+    void refract_row(int y, int width, int begin, int end, BandScratch& scratch) const;
     // A clipped piece's corners (ShadeTriangle::vertex says where), or null.
     const CornerVaryings* varyings_of(const ShadeTriangle& tri) const {
         return tri.clipped() ? &chunks[tri.vertex[1]].clipped[tri.vertex[0]] : nullptr;

@@ -41,10 +41,13 @@ void Pipeline::prepare_surfaces() {
             }
         }
     }
+    prepare_tracer();
 }
 
 void Pipeline::prepare() {
     ++mesh_builds;
+    ray_tree.reset();  // it and the hierarchy see the old meshes
+    accel.reset();
     objects.clear();
     chunks.clear();
     // Mesh building borrows the pool's threads (the same meshes, bit for bit).

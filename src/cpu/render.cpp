@@ -179,6 +179,11 @@ PixelProbe Renderer::probe(int x, int y) {
     impl_->probe_x = impl_->probe_y = -1;
     PixelProbe result = impl_->probed;
     result.position /= impl_->length_scale;  // in the scene's own lengths
+    for (RayNode& node : result.ray_tree) {
+        node.origin /= impl_->length_scale;
+        node.point /= impl_->length_scale;
+        node.length /= impl_->length_scale;
+    }
     const std::uint8_t* pixel = image.pixel(x, y);
     result.rgb = {pixel[0], pixel[1], pixel[2]};
     return result;

@@ -77,6 +77,7 @@ Scene scale_lengths(const Scene& scene, float factor) {
     }
     for (SceneObject& object : result.objects) {
         object.position = scaled(object.position, k);
+        object.material.absorption_distance = scaled(object.material.absorption_distance, k);
         if (std::holds_alternative<MeshFileShape>(object.shape) ||
             std::holds_alternative<MeshDataShape>(object.shape)) {
             object.scale = scaled(object.scale, k);

@@ -1,0 +1,281 @@
+// The ray tree (ray_tree.hpp), docs/spec.md §10.2 items 1–9, one ray at a
+// time, depth first.
+#include "trace/ray_tree.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "litkit/mesh.hpp"
+#include "litkit/refraction.hpp"
+
+namespace litkit::trace {
+
+namespace {
+
+using equations::Vec3;
+
+Vec3<float> to_vec3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+glm::vec3 to_glm(const Vec3<float>& v) { return {v.x, v.y, v.z}; }
+
+// Rays whose path weight is below this are not traced (item 9).
+constexpr float least_weight = 1.0f / 1024.0f;
+
+float largest(const glm::vec3& v) { return std::max({v.x, v.y, v.z}); }
+
+float degrees_of(float cosine) { return glm::degrees(std::acos(std::clamp(cosine, -1.0f, 1.0f))); }
+
+// I of the model at p with unit N and unit V (docs/spec.md §4), unclamped.
+glm::vec3 shade(Reflection reflection, std::span<const equations::PreparedLight> lights,
+                const equations::MaterialT<float>& material, const glm::vec3& point,
+                const glm::vec3& normal, const glm::vec3& to_eye) {
+    const Vec3<float> p = to_vec3(point), n = to_vec3(normal), v = to_vec3(to_eye);
+    return to_glm(equations::with_reflection(reflection, [&](auto model) {
+        return equations::shade_point<decltype(model)::value>(lights, material, p, n, v);
+    }));
+}
+
+// Items 2–6 at one hit: the interface met by a ray of unit direction d on
+// the side given by `entering`, with the shading normal N_s and the face
+// normal N_g (both unit, outward).
+struct Bend {
+    equations::Interface<float> at;
+    bool geometric = false;  // N_g stood in for N_s
+};
+
+bool opposite_signs(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
+bool same_signs(float a, float b) { return (a > 0.0f && b > 0.0f) || (a < 0.0f && b < 0.0f); }
+
+Bend bend(const glm::vec3& d, const glm::vec3& shading_normal, const glm::vec3& face_normal,
+          bool entering, float eta) {
+    const float side = entering ? 1.0f : -1.0f;
+    const Vec3<float> direction = to_vec3(d);
+    const Vec3<float> geometric = to_vec3(side * face_normal);
+    Vec3<float> normal = to_vec3(side * shading_normal);
+    // Item 2: a shading normal that faces away from the ray gives way to N_g.
+    if (-equations::dot(direction, normal) <= 0.0f)
+        return {equations::refract_interface(direction, geometric, eta), true};
+    Bend result{equations::refract_interface(direction, normal, eta), false};
+    // Item 6: T must cross the face and R must not.
+    const float d_n = glm::dot(d, face_normal);
+    const bool crosses = result.at.total_internal_reflection ||
+                         same_signs(glm::dot(to_glm(result.at.refracted), face_normal), d_n);
+    const bool turns_back = opposite_signs(glm::dot(to_glm(result.at.reflected), face_normal), d_n);
+    if (!crosses || !turns_back)
+        result = {equations::refract_interface(direction, geometric, eta), true};
+    return result;
+}
+
+}  // namespace
+
+// One ray still to trace: where it starts and goes, how deep it is and what
+// multiplies its L (item 9), the object it travels in, and the record.
+struct RayTree::Path {
+    glm::vec3 origin;
+    glm::vec3 direction;  // unit
+    int depth;
+    glm::vec3 weight;
+    std::uint32_t inside;  // no_object: the room's medium
+    RayNode::Kind kind;
+    std::vector<RayNode>* record;
+};
+
+RayTree::RayTree(std::span<const TracedObject> objects,
+                 std::span<const equations::PreparedLight> lights, const Accel& accel,
+                 TraceSettings settings)
+    : objects_(objects), lights_(lights), accel_(accel), settings_(settings) {
+    no_specular_.reserve(objects.size());
+    for (const TracedObject& object : objects) {
+        equations::MaterialT<float> material = object.material;
+        material.ks = 0.0f;
+        no_specular_.push_back(material);
+    }
+}
+
+RayTree::Local RayTree::local(std::uint32_t object, const glm::vec3& point, const glm::vec3& normal,
+                              const glm::vec3& to_eye) const {
+    const TracedObject& o = objects_[object];
+    return {shade(o.reflection, lights_, no_specular_[object], point, normal, to_eye),
+            shade(o.reflection, lights_, o.material, point, normal, to_eye)};
+}
+
+glm::vec3 RayTree::trace(const Path& path, int parent_node) const {
+    int node = -1;
+    if (path.record) {
+        RayNode n;
+        n.kind = path.kind;
+        n.depth = path.depth;
+        n.parent = parent_node;
+        n.inside = path.inside != no_object;
+        n.origin = path.origin;
+        n.direction = path.direction;
+        n.weight = path.weight;
+        node = static_cast<int>(path.record->size());
+        path.record->push_back(n);
+    }
+    // Item 9: too deep or too faint: not traced, L = 0.
+    if (path.depth > settings_.max_depth || largest(path.weight) < least_weight) return {};
+    const Ray ray{path.origin, path.direction, settings_.min_distance,
+                  std::numeric_limits<float>::infinity()};
+    const Hit hit = path.inside == no_object ? accel_.nearest_front(ray)
+                                             : accel_.nearest_back(ray, path.inside);
+    if (!hit.found()) {
+        // Item 8: the background from the room's medium; nothing from inside.
+        const glm::vec3 radiance = path.inside == no_object ? settings_.background : glm::vec3(0);
+        if (path.record) {
+            RayNode& n = (*path.record)[static_cast<std::size_t>(node)];
+            n.outcome =
+                path.inside == no_object ? RayNode::Outcome::Background : RayNode::Outcome::Lost;
+            n.local = radiance;
+            n.contribution = path.weight * radiance;
+            n.radiance = radiance;
+        }
+        return radiance;
+    }
+    return interact(path, hit, node);
+}
+
+glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
+    const TracedObject& object = objects_[hit.object];
+    const auto& corners = object.triangles[hit.triangle];
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    const glm::vec3 point = b0 * object.positions[corners[0]] +
+                            hit.b1 * object.positions[corners[1]] +
+                            hit.b2 * object.positions[corners[2]];
+    const glm::vec3 face = face_normal(object.positions[corners[0]], object.positions[corners[1]],
+                                       object.positions[corners[2]]);
+    glm::vec3 normal = face;
+    if (object.smooth) {
+        // Surfaces reached by rays are lit per point: gouraud as phong.
+        const glm::vec3 mixed = b0 * object.normals[corners[0]] +
+                                hit.b1 * object.normals[corners[1]] +
+                                hit.b2 * object.normals[corners[2]];
+        const float length = glm::length(mixed);
+        if (length > 0.0f) normal = mixed / length;
+    }
+    const bool entering = path.inside == no_object;
+    auto record = [&]() -> RayNode* {
+        return path.record ? &(*path.record)[static_cast<std::size_t>(node)] : nullptr;
+    };
+    if (RayNode* n = record()) {
+        n->object = hit.object;
+        n->triangle = hit.triangle;
+        n->point = point;
+        n->length = hit.t;
+    }
+    if (entering && !(object.transmission > 0.0f)) {
+        // An opaque surface: its colour with V = −d.
+        const glm::vec3 color =
+            shade(object.reflection, lights_, object.material, point, normal, -path.direction);
+        if (RayNode* n = record()) {
+            n->outcome = RayNode::Outcome::Surface;
+            n->local = color;
+            n->contribution = path.weight * color;
+            n->radiance = color;
+        }
+        return color;
+    }
+    glm::vec3 own{0.0f};  // the local part, entering from the room
+    glm::vec3 absorbed{1.0f};
+    glm::vec3 weight = path.weight;
+    float share = 1.0f;  // t entering from the room; 1 inside
+    if (entering) {
+        const Local parts = local(hit.object, point, normal, -path.direction);
+        own = (1.0f - object.transmission) * parts.ambient_diffuse +
+              (parts.all - parts.ambient_diffuse);
+        share = object.transmission;
+    } else {
+        // Item 7: Beer–Lambert along the segment inside.
+        absorbed = to_glm(equations::absorption(to_vec3(object.absorption_color), hit.t,
+                                                object.absorption_distance));
+        weight = weight * absorbed;
+    }
+    const float n1 = entering ? settings_.room_ior : object.ior;
+    const float n2 = entering ? object.ior : settings_.room_ior;
+    const Bend b = bend(path.direction, normal, face, entering, n1 / n2);
+    const float fresnel = b.at.fresnel;
+    if (RayNode* n = record()) {
+        n->outcome = RayNode::Outcome::Interface;
+        n->absorption = absorbed;
+        n->n1 = n1;
+        n->n2 = n2;
+        n->theta1 = degrees_of(b.at.cos_incident);
+        n->theta2 = b.at.total_internal_reflection ? 0.0f : degrees_of(b.at.cos_refracted);
+        n->k = b.at.k;
+        n->fresnel = fresnel;
+        n->total_internal_reflection = b.at.total_internal_reflection;
+        n->geometric_normal = b.geometric;
+        n->transmission = entering ? object.transmission : 0.0f;
+        n->local = own;
+        n->contribution = path.weight * own;
+    }
+    // The mirror ray stays on the ray's side, the refracted one crosses.
+    const Path reflected{point,          glm::normalize(to_glm(b.at.reflected)),
+                         path.depth + 1, weight * (share * fresnel),
+                         path.inside,    RayNode::Kind::Reflected,
+                         path.record};
+    glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
+    if (!b.at.total_internal_reflection) {
+        const Path refracted{point,
+                             glm::normalize(to_glm(b.at.refracted)),
+                             path.depth + 1,
+                             weight * (share * (1.0f - fresnel)),
+                             entering ? hit.object : no_object,
+                             RayNode::Kind::Refracted,
+                             path.record};
+        light += (1.0f - fresnel) * trace(refracted, node);
+    }
+    const glm::vec3 radiance = entering ? own + share * light : absorbed * light;
+    if (RayNode* n = record()) n->radiance = radiance;
+    return radiance;
+}
+
+glm::vec3 RayTree::first_hit(const FirstHit& hit, std::vector<RayNode>* record) const {
+    const TracedObject& object = objects_[hit.object];
+    const auto& corners = object.triangles[hit.triangle];
+    const glm::vec3 face = face_normal(object.positions[corners[0]], object.positions[corners[1]],
+                                       object.positions[corners[2]]);
+    const float share = object.transmission;
+    const Bend b =
+        bend(hit.direction, hit.shading_normal, face, true, settings_.room_ior / object.ior);
+    const float fresnel = b.at.fresnel;
+    int node = -1;
+    if (record) {
+        RayNode n;
+        n.kind = RayNode::Kind::Camera;
+        n.outcome = RayNode::Outcome::Interface;
+        n.direction = hit.direction;
+        n.object = hit.object;
+        n.triangle = hit.triangle;
+        n.point = hit.point;
+        n.n1 = settings_.room_ior;
+        n.n2 = object.ior;
+        n.theta1 = degrees_of(b.at.cos_incident);
+        n.theta2 = b.at.total_internal_reflection ? 0.0f : degrees_of(b.at.cos_refracted);
+        n.k = b.at.k;
+        n.fresnel = fresnel;
+        n.total_internal_reflection = b.at.total_internal_reflection;
+        n.geometric_normal = b.geometric;
+        n.transmission = share;
+        node = static_cast<int>(record->size());
+        record->push_back(n);
+    }
+    const Path reflected{hit.point, glm::normalize(to_glm(b.at.reflected)),
+                         2,         glm::vec3(share * fresnel),
+                         no_object, RayNode::Kind::Reflected,
+                         record};
+    glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
+    if (!b.at.total_internal_reflection) {
+        const Path refracted{hit.point,  glm::normalize(to_glm(b.at.refracted)),
+                             2,          glm::vec3(share * (1.0f - fresnel)),
+                             hit.object, RayNode::Kind::Refracted,
+                             record};
+        light += (1.0f - fresnel) * trace(refracted, node);
+    }
+    return share * light;
+}
+
+}  // namespace litkit::trace
