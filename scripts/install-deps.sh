@@ -48,8 +48,8 @@ packages=(
 # Debian 12's clang is clang-14; libFuzzer's runtime is in libclang-rt-14-dev.
 fuzz_packages=(clang libclang-rt-14-dev)
 # bench/compare.sh times whole runs with hyperfine and reads peak memory with
-# GNU time.
-bench_packages=(hyperfine time)
+# GNU time; bench/glass.sh measures litkit's ray tree against Intel Embree.
+bench_packages=(hyperfine time libembree-dev)
 # The playground (docs/web.md): the library compiled to WebAssembly with
 # Debian's emscripten (it brings clang, lld, binaryen, nodejs and node-acorn),
 # and its test in Debian's headless Chromium, driven from node. npm comes
