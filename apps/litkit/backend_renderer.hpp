@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,7 @@ class CpuBackend {
     std::string description() const;
     std::string_view setup_steps() const { return "meshes, normals, world space"; }
     std::optional<std::size_t> shaded_pixel_count() const { return renderer_.shaded_pixel_count(); }
+    std::uint64_t traced_ray_count() const { return renderer_.traced_ray_count(); }
 
   private:
     litkit::Renderer renderer_;
@@ -44,6 +46,7 @@ class GlModuleBackend {
         return "meshes, normals, world space, context, shaders, upload";
     }
     std::optional<std::size_t> shaded_pixel_count() const { return std::nullopt; }
+    std::uint64_t traced_ray_count() const { return 0; }
 
   private:
     std::unique_ptr<GlBackend> renderer_;
@@ -76,6 +79,12 @@ class BackendRenderer {
     // Pixels shaded in the last frame, where the backend counts them.
     std::optional<std::size_t> shaded_pixel_count() const {
         return std::visit([](const auto& renderer) { return renderer.shaded_pixel_count(); },
+                          renderer_);
+    }
+
+    // Rays cast from glass in the last frame (0 without glass).
+    std::uint64_t traced_ray_count() const {
+        return std::visit([](const auto& renderer) { return renderer.traced_ray_count(); },
                           renderer_);
     }
 

@@ -1,6 +1,7 @@
 // litkit bench: frames rendered into memory, and the time per frame.
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -57,6 +58,12 @@ int run_bench(const BenchArguments& arguments) {
     }
     std::printf("frames: %d, median %.3f ms, min %.3f ms\n", arguments.frames, median,
                 frame_ms.front());
+    if (const std::uint64_t rays = renderer.traced_ray_count()) {
+        // Glass (docs/spec.md §10): the rays cast from surfaces, per frame.
+        std::printf("rays traced: %llu per frame, %.2f million per second of the frame\n",
+                    static_cast<unsigned long long>(rays),
+                    static_cast<double>(rays) / (median * 1e3));
+    }
     std::printf("median_frame_ms=%.3f fps=%.1f\n", median, 1000.0 / median);
     return exit_success;
 }

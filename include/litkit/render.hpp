@@ -122,6 +122,10 @@ class Renderer {
     /// Pixels the last frame covered, each shaded once (hidden ones are not;
     /// after probe(), those of the pixel's band).
     std::size_t shaded_pixel_count() const;
+    /// Rays the last frame cast from the surfaces of glass (docs/spec.md
+    /// §10: the pixels' own rays are not cast, the rasterizer finds their
+    /// first hit); 0 for a scene without glass.
+    std::uint64_t traced_ray_count() const;
 
   private:
     struct Impl;

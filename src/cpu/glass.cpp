@@ -142,8 +142,8 @@ void Pipeline::refract_row(int y, int width, int begin, int end, BandScratch& s)
         const bool probing = y == probe_y && x == probe_x;
         std::vector<RayNode>* record = probing ? &probed.ray_tree : nullptr;
         if (record) record->clear();
-        const glm::vec3 traced_light =
-            ray_tree->first_hit({tri->object, tri->source, point, direction, normal}, record);
+        const glm::vec3 traced_light = ray_tree->first_hit(
+            {tri->object, tri->source, point, direction, normal}, s.traced_rays, record);
         const glm::vec3 total = own + traced_light;
         if (record && !record->empty()) {
             RayNode& camera_ray = record->front();

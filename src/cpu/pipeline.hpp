@@ -133,6 +133,7 @@ struct BandScratch {
     std::vector<float> view_w, nx, ny, nz;        // one row of Phong surfaces (view depth, normal)
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
     std::size_t shaded_pixels = 0;                // this frame, by this thread
+    std::uint64_t traced_rays = 0;                // this frame, by this thread (glass)
     // Setup's triangles of the chunk at hand, before they are binned.
     std::vector<BinnedTriangle> pending;
     std::vector<std::uint32_t> band_count;

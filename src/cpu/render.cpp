@@ -77,7 +77,8 @@ void Pipeline::begin_frame(int width, int height) {
     background_row.resize(3 * static_cast<std::size_t>(width));
     const Rgb8 background = to_rgb8(scene.output.background);
     for (std::size_t i = 0; i < background_row.size(); ++i) background_row[i] = background[i % 3];
-    for (BandScratch& band_scratch : scratch) band_scratch.shaded_pixels = 0;
+    for (BandScratch& band_scratch : scratch)
+        band_scratch.shaded_pixels = band_scratch.traced_rays = 0;
 }
 
 // Renderer's state is the pipeline's.
@@ -101,6 +102,12 @@ std::size_t Renderer::triangle_count() const {
 int Renderer::thread_count() const { return impl_->pool.size(); }
 
 const char* Renderer::kernel_set() const { return impl_->kernels.name; }
+
+std::uint64_t Renderer::traced_ray_count() const {
+    std::uint64_t count = 0;
+    for (const BandScratch& scratch : impl_->scratch) count += scratch.traced_rays;
+    return count;
+}
 
 std::size_t Renderer::shaded_pixel_count() const {
     std::size_t count = 0;

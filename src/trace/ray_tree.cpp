@@ -81,6 +81,7 @@ struct RayTree::Path {
     std::uint32_t inside;  // no_object: the room's medium
     RayNode::Kind kind;
     std::vector<RayNode>* record;
+    std::uint64_t* rays;  // the count of rays cast
 };
 
 RayTree::RayTree(std::span<const TracedObject> objects,
@@ -118,6 +119,7 @@ glm::vec3 RayTree::trace(const Path& path, int parent_node) const {
     }
     // Item 9: too deep or too faint: not traced, L = 0.
     if (path.depth > settings_.max_depth || largest(path.weight) < least_weight) return {};
+    ++*path.rays;
     const Ray ray{path.origin, path.direction, settings_.min_distance,
                   std::numeric_limits<float>::infinity()};
     const Hit hit = path.inside == no_object ? accel_.nearest_front(ray)
@@ -216,7 +218,7 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
     const Path reflected{point,          glm::normalize(to_glm(b.at.reflected)),
                          path.depth + 1, weight * (share * fresnel),
                          path.inside,    RayNode::Kind::Reflected,
-                         path.record};
+                         path.record,    path.rays};
     glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
     if (!b.at.total_internal_reflection) {
         const Path refracted{point,
@@ -225,7 +227,8 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
                              weight * (share * (1.0f - fresnel)),
                              entering ? hit.object : no_object,
                              RayNode::Kind::Refracted,
-                             path.record};
+                             path.record,
+                             path.rays};
         light += (1.0f - fresnel) * trace(refracted, node);
     }
     const glm::vec3 radiance = entering ? own + share * light : absorbed * light;
@@ -233,7 +236,8 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
     return radiance;
 }
 
-glm::vec3 RayTree::first_hit(const FirstHit& hit, std::vector<RayNode>* record) const {
+glm::vec3 RayTree::first_hit(const FirstHit& hit, std::uint64_t& rays,
+                             std::vector<RayNode>* record) const {
     const TracedObject& object = objects_[hit.object];
     const auto& corners = object.triangles[hit.triangle];
     const glm::vec3 face = face_normal(object.positions[corners[0]], object.positions[corners[1]],
@@ -272,7 +276,7 @@ glm::vec3 RayTree::first_hit(const FirstHit& hit, std::vector<RayNode>* record) 
         const Path refracted{hit.point,  glm::normalize(to_glm(b.at.refracted)),
                              2,          glm::vec3(share * (1.0f - fresnel)),
                              hit.object, RayNode::Kind::Refracted,
-                             record};
+                             record,     &rays};
         light += (1.0f - fresnel) * trace(refracted, node);
     }
     return share * light;

@@ -67,10 +67,11 @@ class RayTree {
             const Accel& accel, TraceSettings settings);
 
     // The part of a first hit's L that is traced: t·[F·L(R) + (1 − F)·L(T)]
-    // (the object's t > 0). `record`: where to put the tree's nodes (its
-    // first node the camera's ray, to be completed by the caller with the
-    // local part), or null.
-    glm::vec3 first_hit(const FirstHit& hit, std::vector<RayNode>* record = nullptr) const;
+    // (the object's t > 0). Adds the rays it casts to `rays`. `record`:
+    // where to put the tree's nodes (its first node the camera's ray, to be
+    // completed by the caller with the local part), or null.
+    glm::vec3 first_hit(const FirstHit& hit, std::uint64_t& rays,
+                        std::vector<RayNode>* record = nullptr) const;
 
     // The I_ad of docs/spec.md §10.2 item 8 (everything but the specular
     // part) and the whole I of `object` at p, with V = `to_eye`: the local
