@@ -1,0 +1,302 @@
+// The binned SAH build (bvh_build.hpp). Each node's primitives are a range
+// of one array of references, partitioned in place; a node's passes over
+// them (bounds, then bins) run in chunks on the lent threads when the node
+// is large, and the tree's lower parts, once the ranges are small enough,
+// are built as independent jobs and appended in a fixed order. Minima,
+// maxima and counts merge exactly in any order, so the tree is the same on
+// any number of threads.
+#include "trace/bvh_build.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <deque>
+
+#include "trace/simd.hpp"
+
+namespace litkit::trace::build {
+
+namespace {
+
+using simd::Floats;
+
+constexpr int bin_count = 16;
+constexpr std::uint32_t chunk = 4096;    // references per job of a chunked pass
+constexpr std::uint32_t max_depth = 64;  // deeper, ranges are halved (bounds the stacks)
+
+// A primitive's box; lane 3 of `lo` holds its index (as bits), of `hi` zero.
+struct alignas(16) Ref {
+    float lo[4];
+    float hi[4];
+};
+
+std::uint32_t id_of(const Ref& ref) {
+    std::uint32_t id;
+    std::memcpy(&id, &ref.lo[3], sizeof id);
+    return id;
+}
+
+// Box and centroid bounds (centroids doubled: lo + hi) of refs [begin, end).
+struct Bounds {
+    static constexpr float inf = std::numeric_limits<float>::infinity();
+    Floats lo = Floats(inf), hi = Floats(-inf), c_lo = Floats(inf), c_hi = Floats(-inf);
+    void merge(const Bounds& other) {
+        lo = xsimd::min(lo, other.lo), hi = xsimd::max(hi, other.hi);
+        c_lo = xsimd::min(c_lo, other.c_lo), c_hi = xsimd::max(c_hi, other.c_hi);
+    }
+};
+
+const Floats& xyz_mask() {
+    alignas(16) static const std::uint32_t bits[4] = {~0u, ~0u, ~0u, 0u};
+    static const Floats mask =
+        xsimd::bitwise_cast<Floats>(xsimd::batch<std::uint32_t, simd::Arch>::load_aligned(bits));
+    return mask;
+}
+
+Bounds bounds_of(const Ref* refs, std::uint32_t begin, std::uint32_t end) {
+    Bounds b;
+    const Floats keep = xyz_mask();
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const Floats lo = Floats::load_aligned(refs[i].lo) & keep;
+        const Floats hi = Floats::load_aligned(refs[i].hi);
+        const Floats c = lo + hi;
+        b.lo = xsimd::min(b.lo, lo), b.hi = xsimd::max(b.hi, hi);
+        b.c_lo = xsimd::min(b.c_lo, c), b.c_hi = xsimd::max(b.c_hi, c);
+    }
+    return b;
+}
+
+struct Bins {
+    std::array<std::array<Floats, bin_count>, 3> lo, hi;
+    std::array<std::array<std::uint32_t, bin_count>, 3> count{};
+    Bins() {
+        for (auto& axis : lo) axis.fill(Floats(std::numeric_limits<float>::infinity()));
+        for (auto& axis : hi) axis.fill(Floats(-std::numeric_limits<float>::infinity()));
+    }
+    void merge(const Bins& other) {
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < bin_count; ++k) {
+                lo[a][k] = xsimd::min(lo[a][k], other.lo[a][k]);
+                hi[a][k] = xsimd::max(hi[a][k], other.hi[a][k]);
+                count[a][k] += other.count[a][k];
+            }
+    }
+};
+
+// The bin of a doubled centroid c along each axis: (c − c_lo) · scale,
+// truncated, at most bin_count − 1. The partition computes the same in
+// scalars (the same operations, so the same bins).
+struct Binner {
+    Floats c_lo, scale;
+    float c_lo_s[4], scale_s[4];
+    explicit Binner(const Bounds& b) : c_lo(b.c_lo) {
+        alignas(16) float lo[4], hi[4], s[4];
+        b.c_lo.store_aligned(lo), b.c_hi.store_aligned(hi);
+        for (int a = 0; a < 4; ++a) {
+            const float extent = hi[a] - lo[a];
+            s[a] = a < 3 && extent > 0.0f ? bin_count * (1.0f - 1e-6f) / extent : 0.0f;
+            c_lo_s[a] = lo[a], scale_s[a] = s[a];
+        }
+        scale = Floats::load_aligned(s);
+    }
+    int bin(const Ref& ref, int axis) const {
+        const float c = ref.lo[axis] + ref.hi[axis];
+        const float f = std::min((c - c_lo_s[axis]) * scale_s[axis], float(bin_count - 1));
+        return static_cast<int>(f);
+    }
+};
+
+Bins bin_refs(const Ref* refs, std::uint32_t begin, std::uint32_t end, const Binner& binner) {
+    Bins bins;
+    const Floats keep = xyz_mask(), last(float(bin_count - 1));
+    alignas(16) std::int32_t k[4];
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const Floats lo = Floats::load_aligned(refs[i].lo) & keep;
+        const Floats hi = Floats::load_aligned(refs[i].hi);
+        const Floats f = xsimd::min((lo + hi - binner.c_lo) * binner.scale, last);
+        xsimd::to_int(f).store_aligned(k);
+        for (int a = 0; a < 3; ++a) {
+            bins.lo[a][k[a]] = xsimd::min(bins.lo[a][k[a]], lo);
+            bins.hi[a][k[a]] = xsimd::max(bins.hi[a][k[a]], hi);
+            ++bins.count[a][k[a]];
+        }
+    }
+    return bins;
+}
+
+float half_area(const Floats& lo, const Floats& hi) {
+    alignas(16) float d[4];
+    (hi - lo).store_aligned(d);
+    if (!(d[0] >= 0.0f)) return 0.0f;  // empty
+    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+}
+
+std::uint32_t blocks(std::uint32_t n) { return (n + 3) / 4; }
+
+// Runs `pass` over [begin, end) in chunks (on the lent threads when the
+// range is large), merging the chunks' results in order.
+template <class Result, class Pass>
+Result chunked(const ParallelFor* parallel, std::uint32_t begin, std::uint32_t end, Pass pass) {
+    const std::uint32_t n = end - begin;
+    if (!parallel || n < 2 * chunk) return pass(begin, end);
+    const std::uint32_t jobs = (n + chunk - 1) / chunk;
+    std::vector<Result> parts(jobs);
+    run_parallel(*parallel, jobs, [&](std::size_t j) {
+        const std::uint32_t b = begin + static_cast<std::uint32_t>(j) * chunk;
+        parts[j] = pass(b, std::min(end, b + chunk));
+    });
+    for (std::uint32_t j = 1; j < jobs; ++j) parts[0].merge(parts[j]);
+    return parts[0];
+}
+
+struct Builder {
+    std::vector<Ref> refs;
+    std::uint32_t max_leaf;
+
+    // Decides node [begin, end): its box, and either a leaf (returns false)
+    // or the split point `mid` after partitioning the range.
+    bool split(std::uint32_t begin, std::uint32_t end, std::uint32_t depth, Box& box,
+               std::uint32_t& mid, const ParallelFor* parallel) {
+        Ref* r = refs.data();
+        const Bounds b =
+            chunked<Bounds>(parallel, begin, end,
+                            [&](std::uint32_t s, std::uint32_t e) { return bounds_of(r, s, e); });
+        alignas(16) float lo[4], hi[4];
+        b.lo.store_aligned(lo), b.hi.store_aligned(hi);
+        std::copy(lo, lo + 3, box.lo), std::copy(hi, hi + 3, box.hi);
+        const std::uint32_t n = end - begin;
+        if (n <= 1) return false;
+        if (depth >= max_depth) {  // halve, whatever the heuristic says
+            if (n <= max_leaf) return false;
+            mid = begin + n / 2;
+            return true;
+        }
+        const Binner binner(b);
+        const Bins bins = chunked<Bins>(
+            parallel, begin, end,
+            [&](std::uint32_t s, std::uint32_t e) { return bin_refs(r, s, e, binner); });
+        // Sweep each axis: cost of splitting before bin k.
+        float best_cost = std::numeric_limits<float>::infinity();
+        int best_axis = -1, best_k = 0;
+        for (int a = 0; a < 3; ++a) {
+            std::array<float, bin_count> right_cost{};
+            Floats rlo(std::numeric_limits<float>::infinity()),
+                rhi(-std::numeric_limits<float>::infinity());
+            std::uint32_t rn = 0;
+            for (int k = bin_count - 1; k > 0; --k) {
+                rlo = xsimd::min(rlo, bins.lo[a][k]), rhi = xsimd::max(rhi, bins.hi[a][k]);
+                rn += bins.count[a][k];
+                right_cost[k] = rn ? half_area(rlo, rhi) * float(blocks(rn)) : -1.0f;
+            }
+            Floats llo(std::numeric_limits<float>::infinity()),
+                lhi(-std::numeric_limits<float>::infinity());
+            std::uint32_t ln = 0;
+            for (int k = 1; k < bin_count; ++k) {
+                llo = xsimd::min(llo, bins.lo[a][k - 1]), lhi = xsimd::max(lhi, bins.hi[a][k - 1]);
+                ln += bins.count[a][k - 1];
+                if (ln == 0 || ln == n) continue;
+                const float cost = half_area(llo, lhi) * float(blocks(ln)) + right_cost[k];
+                if (cost < best_cost) best_cost = cost, best_axis = a, best_k = k;
+            }
+        }
+        const float area = half_area(b.lo, b.hi);
+        // Traversing a node costs as much as testing one block.
+        const float leaf_cost = area * float(blocks(n));
+        if (n <= max_leaf && (best_axis < 0 || leaf_cost <= area + best_cost)) return false;
+        if (best_axis < 0) {  // every centroid in one bin: halve
+            mid = begin + n / 2;
+            return true;
+        }
+        Ref* split_at = std::partition(r + begin, r + end, [&](const Ref& ref) {
+            return binner.bin(ref, best_axis) < best_k;
+        });
+        mid = static_cast<std::uint32_t>(split_at - r);
+        return true;
+    }
+
+    // Builds the subtree of [begin, end) into `nodes`, its root at `at`.
+    void subtree(std::vector<Node>& nodes, std::uint32_t at, std::uint32_t begin, std::uint32_t end,
+                 std::uint32_t depth) {
+        Box box;
+        std::uint32_t mid = 0;
+        if (!split(begin, end, depth, box, mid, nullptr)) {
+            nodes[at] = Node{box, begin, 0, end - begin};
+            return;
+        }
+        const auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes.resize(nodes.size() + 2);
+        nodes[at] = Node{box, left, left + 1, 0};
+        subtree(nodes, left, begin, mid, depth + 1);
+        subtree(nodes, left + 1, mid, end, depth + 1);
+    }
+};
+
+}  // namespace
+
+Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const ParallelFor& parallel) {
+    Tree tree;
+    const auto n = static_cast<std::uint32_t>(boxes.size());
+    if (n == 0) return tree;
+    Builder builder{std::vector<Ref>(n), max_leaf};
+    parallel_chunks(parallel, n, chunk, [&](std::size_t i) {
+        Ref& ref = builder.refs[i];
+        const auto id = static_cast<std::uint32_t>(i);
+        std::copy(boxes[i].lo, boxes[i].lo + 3, ref.lo);
+        std::copy(boxes[i].hi, boxes[i].hi + 3, ref.hi);
+        std::memcpy(&ref.lo[3], &id, sizeof id);
+        ref.hi[3] = 0.0f;
+    });
+    const ParallelFor* lent = parallel ? &parallel : nullptr;
+
+    // The upper part, breadth first, until the ranges are small enough to
+    // be jobs of their own (the same with or without threads, so that the
+    // nodes are numbered the same).
+    struct Pending {
+        std::uint32_t node, begin, end, depth;
+    };
+    const std::uint32_t job_size = std::max<std::uint32_t>(2048, n / 32);
+    std::vector<Node>& nodes = tree.nodes;
+    nodes.resize(1);
+    std::deque<Pending> queue{{0, 0, n, 0}};
+    std::vector<Pending> jobs;
+    while (!queue.empty()) {
+        const Pending p = queue.front();
+        queue.pop_front();
+        if (p.end - p.begin <= job_size) {
+            jobs.push_back(p);
+            continue;
+        }
+        Box box;
+        std::uint32_t mid = 0;
+        if (!builder.split(p.begin, p.end, p.depth, box, mid, lent)) {
+            nodes[p.node] = Node{box, p.begin, 0, p.end - p.begin};
+            continue;
+        }
+        const auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes.resize(nodes.size() + 2);
+        nodes[p.node] = Node{box, left, left + 1, 0};
+        queue.push_back({left, p.begin, mid, p.depth + 1});
+        queue.push_back({left + 1, mid, p.end, p.depth + 1});
+    }
+    // The jobs, each into a tree of its own (its root first), then appended
+    // in the order they were found.
+    std::vector<std::vector<Node>> parts(jobs.size());
+    run_parallel(parallel, jobs.size(), [&](std::size_t j) {
+        parts[j].resize(1);
+        builder.subtree(parts[j], 0, jobs[j].begin, jobs[j].end, jobs[j].depth);
+    });
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+        const auto offset = static_cast<std::uint32_t>(nodes.size()) - 1;  // part's 1 → offset + 1
+        auto remap = [&](Node node) {
+            if (node.count == 0) node.a += offset, node.b += offset;
+            return node;
+        };
+        nodes[jobs[j].node] = remap(parts[j][0]);
+        for (std::size_t i = 1; i < parts[j].size(); ++i) nodes.push_back(remap(parts[j][i]));
+    }
+    tree.order.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) tree.order[i] = id_of(builder.refs[i]);
+    return tree;
+}
+
+}  // namespace litkit::trace::build
