@@ -20,7 +20,7 @@ namespace {
 
 using simd::Floats;
 
-constexpr int bin_count = 16;
+constexpr int bin_count = 16;            // at most; 8 for nodes of up to 32 primitives
 constexpr std::uint32_t chunk = 4096;    // references per job of a chunked pass
 constexpr std::uint32_t max_depth = 64;  // deeper, ranges are halved (bounds the stacks)
 
@@ -69,13 +69,18 @@ Bounds bounds_of(const Ref* refs, std::uint32_t begin, std::uint32_t end) {
 struct Bins {
     std::array<std::array<Floats, bin_count>, 3> lo, hi;
     std::array<std::array<std::uint32_t, bin_count>, 3> count{};
-    Bins() {
-        for (auto& axis : lo) axis.fill(Floats(std::numeric_limits<float>::infinity()));
-        for (auto& axis : hi) axis.fill(Floats(-std::numeric_limits<float>::infinity()));
+    int used = 0;
+    Bins() = default;
+    explicit Bins(int bins) : used(bins) {
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < used; ++k) {
+                lo[a][k] = Floats(std::numeric_limits<float>::infinity());
+                hi[a][k] = Floats(-std::numeric_limits<float>::infinity());
+            }
     }
     void merge(const Bins& other) {
         for (int a = 0; a < 3; ++a)
-            for (int k = 0; k < bin_count; ++k) {
+            for (int k = 0; k < used; ++k) {
                 lo[a][k] = xsimd::min(lo[a][k], other.lo[a][k]);
                 hi[a][k] = xsimd::max(hi[a][k], other.hi[a][k]);
                 count[a][k] += other.count[a][k];
@@ -84,31 +89,32 @@ struct Bins {
 };
 
 // The bin of a doubled centroid c along each axis: (c − c_lo) · scale,
-// truncated, at most bin_count − 1. The partition computes the same in
+// truncated, at most bins − 1. The partition computes the same in
 // scalars (the same operations, so the same bins).
 struct Binner {
+    int bins;
     Floats c_lo, scale;
     float c_lo_s[4], scale_s[4];
-    explicit Binner(const Bounds& b) : c_lo(b.c_lo) {
+    Binner(const Bounds& b, int bins) : bins(bins), c_lo(b.c_lo) {
         alignas(16) float lo[4], hi[4], s[4];
         b.c_lo.store_aligned(lo), b.c_hi.store_aligned(hi);
         for (int a = 0; a < 4; ++a) {
             const float extent = hi[a] - lo[a];
-            s[a] = a < 3 && extent > 0.0f ? bin_count * (1.0f - 1e-6f) / extent : 0.0f;
+            s[a] = a < 3 && extent > 0.0f ? float(bins) * (1.0f - 1e-6f) / extent : 0.0f;
             c_lo_s[a] = lo[a], scale_s[a] = s[a];
         }
         scale = Floats::load_aligned(s);
     }
     int bin(const Ref& ref, int axis) const {
         const float c = ref.lo[axis] + ref.hi[axis];
-        const float f = std::min((c - c_lo_s[axis]) * scale_s[axis], float(bin_count - 1));
+        const float f = std::min((c - c_lo_s[axis]) * scale_s[axis], float(bins - 1));
         return static_cast<int>(f);
     }
 };
 
 Bins bin_refs(const Ref* refs, std::uint32_t begin, std::uint32_t end, const Binner& binner) {
-    Bins bins;
-    const Floats keep = xyz_mask(), last(float(bin_count - 1));
+    Bins bins(binner.bins);
+    const Floats keep = xyz_mask(), last(float(binner.bins - 1));
     alignas(16) std::int32_t k[4];
     for (std::uint32_t i = begin; i < end; ++i) {
         const Floats lo = Floats::load_aligned(refs[i].lo) & keep;
@@ -165,13 +171,16 @@ struct Builder {
         b.lo.store_aligned(lo), b.hi.store_aligned(hi);
         std::copy(lo, lo + 3, box.lo), std::copy(hi, hi + 3, box.hi);
         const std::uint32_t n = end - begin;
-        if (n <= 1) return false;
+        // A leaf of one block costs no more than any split (which adds a
+        // node to the blocks).
+        if (n <= 1 || (n <= max_leaf && max_leaf <= 4)) return false;
         if (depth >= max_depth) {  // halve, whatever the heuristic says
             if (n <= max_leaf) return false;
             mid = begin + n / 2;
             return true;
         }
-        const Binner binner(b);
+        const Binner binner(b, n <= 32 ? 8 : bin_count);
+        const int used = binner.bins;
         const Bins bins = chunked<Bins>(
             parallel, begin, end,
             [&](std::uint32_t s, std::uint32_t e) { return bin_refs(r, s, e, binner); });
@@ -183,7 +192,7 @@ struct Builder {
             Floats rlo(std::numeric_limits<float>::infinity()),
                 rhi(-std::numeric_limits<float>::infinity());
             std::uint32_t rn = 0;
-            for (int k = bin_count - 1; k > 0; --k) {
+            for (int k = used - 1; k > 0; --k) {
                 rlo = xsimd::min(rlo, bins.lo[a][k]), rhi = xsimd::max(rhi, bins.hi[a][k]);
                 rn += bins.count[a][k];
                 right_cost[k] = rn ? half_area(rlo, rhi) * float(blocks(rn)) : -1.0f;
@@ -191,7 +200,7 @@ struct Builder {
             Floats llo(std::numeric_limits<float>::infinity()),
                 lhi(-std::numeric_limits<float>::infinity());
             std::uint32_t ln = 0;
-            for (int k = 1; k < bin_count; ++k) {
+            for (int k = 1; k < used; ++k) {
                 llo = xsimd::min(llo, bins.lo[a][k - 1]), lhi = xsimd::max(lhi, bins.hi[a][k - 1]);
                 ln += bins.count[a][k - 1];
                 if (ln == 0 || ln == n) continue;
