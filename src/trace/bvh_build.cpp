@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <deque>
 
 #include "trace/simd.hpp"
 
@@ -23,6 +22,7 @@ using simd::Floats;
 constexpr int bin_count = 16;            // at most; 8 for nodes of up to 32 primitives
 constexpr std::uint32_t chunk = 4096;    // references per job of a chunked pass
 constexpr std::uint32_t max_depth = 64;  // deeper, ranges are halved (bounds the stacks)
+constexpr std::uint32_t small = 16;      // ranges split at their median, not binned
 
 // A primitive's box; lane 3 of `lo` holds its index (as bits), of `hi` zero.
 struct alignas(16) Ref {
@@ -64,6 +64,14 @@ Bounds bounds_of(const Ref* refs, std::uint32_t begin, std::uint32_t end) {
         b.c_lo = xsimd::min(b.c_lo, c), b.c_hi = xsimd::max(b.c_hi, c);
     }
     return b;
+}
+
+Box box_of(const Bounds& b) {
+    alignas(16) float lo[4], hi[4];
+    b.lo.store_aligned(lo), b.hi.store_aligned(hi);
+    Box box;
+    std::copy(lo, lo + 3, box.lo), std::copy(hi, hi + 3, box.hi);
+    return box;
 }
 
 struct Bins {
@@ -159,27 +167,39 @@ struct Builder {
     std::vector<Ref> refs;
     std::uint32_t max_leaf;
 
-    // Decides node [begin, end): its box, and either a leaf (returns false)
-    // or the split point `mid` after partitioning the range.
-    bool split(std::uint32_t begin, std::uint32_t end, std::uint32_t depth, Box& box,
-               std::uint32_t& mid, const ParallelFor* parallel) {
+    // Decides node [begin, end) with bounds `b`: a leaf (returns false), or
+    // the split point `mid` after partitioning the range, and the bounds of
+    // both sides.
+    bool split(std::uint32_t begin, std::uint32_t end, std::uint32_t depth, const Bounds& b,
+               std::uint32_t& mid, Bounds& left, Bounds& right, const ParallelFor* parallel) {
         Ref* r = refs.data();
-        const Bounds b =
-            chunked<Bounds>(parallel, begin, end,
-                            [&](std::uint32_t s, std::uint32_t e) { return bounds_of(r, s, e); });
-        alignas(16) float lo[4], hi[4];
-        b.lo.store_aligned(lo), b.hi.store_aligned(hi);
-        std::copy(lo, lo + 3, box.lo), std::copy(hi, hi + 3, box.hi);
         const std::uint32_t n = end - begin;
         // A leaf of one block costs no more than any split (which adds a
         // node to the blocks).
         if (n <= 1 || (n <= max_leaf && max_leaf <= 4)) return false;
-        if (depth >= max_depth) {  // halve, whatever the heuristic says
-            if (n <= max_leaf) return false;
+        const auto halve = [&] {
             mid = begin + n / 2;
+            left = bounds_of(r, begin, mid), right = bounds_of(r, mid, end);
+            return true;
+        };
+        if (depth >= max_depth) return n > max_leaf && halve();  // whatever the heuristic says
+        if (n <= small) {
+            // Few primitives: split at the median along the centroids'
+            // longest axis (cheaper than binning, and as good this close to
+            // the leaves), a whole number of blocks on the left.
+            alignas(16) float extent[4];
+            (b.c_hi - b.c_lo).store_aligned(extent);
+            const int axis = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
+                                                    : (extent[1] >= extent[2] ? 1 : 2);
+            const std::uint32_t blocks_left = (n / 2 + 3) / 4;
+            mid = begin + std::min(4 * blocks_left, n - 1);
+            std::nth_element(r + begin, r + mid, r + end, [axis](const Ref& p, const Ref& q) {
+                return p.lo[axis] + p.hi[axis] < q.lo[axis] + q.hi[axis];
+            });
+            left = bounds_of(r, begin, mid), right = bounds_of(r, mid, end);
             return true;
         }
-        const Binner binner(b, n <= 32 ? 8 : bin_count);
+        const Binner binner(b, n <= 64 ? 8 : bin_count);
         const int used = binner.bins;
         const Bins bins = chunked<Bins>(
             parallel, begin, end,
@@ -212,31 +232,45 @@ struct Builder {
         // Traversing a node costs as much as testing one block.
         const float leaf_cost = area * float(blocks(n));
         if (n <= max_leaf && (best_axis < 0 || leaf_cost <= area + best_cost)) return false;
-        if (best_axis < 0) {  // every centroid in one bin: halve
-            mid = begin + n / 2;
-            return true;
+        if (best_axis < 0) return halve();  // every centroid in one bin
+        // Hoare's partition, each reference classified once, its bounds
+        // added to its side's as it is.
+        left = right = Bounds{};
+        const Floats keep = xyz_mask();
+        const auto add = [&](Bounds& side, const Ref& ref) {
+            const Floats lo = Floats::load_aligned(ref.lo) & keep;
+            const Floats hi = Floats::load_aligned(ref.hi);
+            side.lo = xsimd::min(side.lo, lo), side.hi = xsimd::max(side.hi, hi);
+            side.c_lo = xsimd::min(side.c_lo, lo + hi), side.c_hi = xsimd::max(side.c_hi, lo + hi);
+        };
+        const auto goes_left = [&](const Ref& ref) { return binner.bin(ref, best_axis) < best_k; };
+        std::uint32_t i = begin, j = end;
+        while (true) {
+            while (i < j && goes_left(r[i])) add(left, r[i++]);
+            while (i < j && !goes_left(r[j - 1])) add(right, r[--j]);
+            if (i >= j) break;
+            add(right, r[i]), add(left, r[j - 1]);
+            std::swap(r[i++], r[--j]);
         }
-        Ref* split_at = std::partition(r + begin, r + end, [&](const Ref& ref) {
-            return binner.bin(ref, best_axis) < best_k;
-        });
-        mid = static_cast<std::uint32_t>(split_at - r);
+        mid = i;
         return true;
     }
 
-    // Builds the subtree of [begin, end) into `nodes`, its root at `at`.
+    // Builds the subtree of [begin, end) (bounds `b`) into `nodes`, its
+    // root at `at`.
     void subtree(std::vector<Node>& nodes, std::uint32_t at, std::uint32_t begin, std::uint32_t end,
-                 std::uint32_t depth) {
-        Box box;
+                 std::uint32_t depth, const Bounds& b) {
         std::uint32_t mid = 0;
-        if (!split(begin, end, depth, box, mid, nullptr)) {
-            nodes[at] = Node{box, begin, 0, end - begin};
+        Bounds left_b, right_b;
+        if (!split(begin, end, depth, b, mid, left_b, right_b, nullptr)) {
+            nodes[at] = Node{box_of(b), begin, 0, end - begin};
             return;
         }
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.resize(nodes.size() + 2);
-        nodes[at] = Node{box, left, left + 1, 0};
-        subtree(nodes, left, begin, mid, depth + 1);
-        subtree(nodes, left + 1, mid, end, depth + 1);
+        nodes[at] = Node{box_of(b), left, left + 1, 0};
+        subtree(nodes, left, begin, mid, depth + 1, left_b);
+        subtree(nodes, left + 1, mid, end, depth + 1, right_b);
     }
 };
 
@@ -257,42 +291,62 @@ Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const Parall
     });
     const ParallelFor* lent = parallel ? &parallel : nullptr;
 
-    // The upper part, breadth first, until the ranges are small enough to
-    // be jobs of their own (the same with or without threads, so that the
-    // nodes are numbered the same).
+    // The upper part, a level at a time, until the ranges are small enough
+    // to be jobs of their own: a level of one node splits with its passes in
+    // chunks, a level of several splits its nodes side by side. Nodes are
+    // numbered in level order, with or without threads.
     struct Pending {
         std::uint32_t node, begin, end, depth;
+        Bounds bounds;
+    };
+    struct Split {
+        std::uint32_t mid = 0;
+        bool inner = false;
+        Bounds left, right;
     };
     const std::uint32_t job_size = std::max<std::uint32_t>(2048, n / 32);
     std::vector<Node>& nodes = tree.nodes;
     nodes.resize(1);
-    std::deque<Pending> queue{{0, 0, n, 0}};
-    std::vector<Pending> jobs;
-    while (!queue.empty()) {
-        const Pending p = queue.front();
-        queue.pop_front();
-        if (p.end - p.begin <= job_size) {
-            jobs.push_back(p);
-            continue;
+    Ref* r = builder.refs.data();
+    const Bounds all = chunked<Bounds>(
+        lent, 0, n, [&](std::uint32_t s, std::uint32_t e) { return bounds_of(r, s, e); });
+    std::vector<Pending> level{{0, 0, n, 0, all}}, jobs;
+    while (!level.empty()) {
+        std::vector<Pending> splitting, next;
+        for (const Pending& p : level)
+            (p.end - p.begin <= job_size ? jobs : splitting).push_back(p);
+        std::vector<Split> splits(splitting.size());
+        const auto one = [&](std::size_t i, const ParallelFor* chunks) {
+            const Pending& p = splitting[i];
+            Split& out = splits[i];
+            out.inner = builder.split(p.begin, p.end, p.depth, p.bounds, out.mid, out.left,
+                                      out.right, chunks);
+        };
+        if (splitting.size() == 1)
+            one(0, lent);
+        else
+            run_parallel(parallel, splitting.size(), [&](std::size_t i) { one(i, nullptr); });
+        for (std::size_t i = 0; i < splitting.size(); ++i) {
+            const Pending& p = splitting[i];
+            const Split& done = splits[i];
+            if (!done.inner) {
+                nodes[p.node] = Node{box_of(p.bounds), p.begin, 0, p.end - p.begin};
+                continue;
+            }
+            const auto left = static_cast<std::uint32_t>(nodes.size());
+            nodes.resize(nodes.size() + 2);
+            nodes[p.node] = Node{box_of(p.bounds), left, left + 1, 0};
+            next.push_back({left, p.begin, done.mid, p.depth + 1, done.left});
+            next.push_back({left + 1, done.mid, p.end, p.depth + 1, done.right});
         }
-        Box box;
-        std::uint32_t mid = 0;
-        if (!builder.split(p.begin, p.end, p.depth, box, mid, lent)) {
-            nodes[p.node] = Node{box, p.begin, 0, p.end - p.begin};
-            continue;
-        }
-        const auto left = static_cast<std::uint32_t>(nodes.size());
-        nodes.resize(nodes.size() + 2);
-        nodes[p.node] = Node{box, left, left + 1, 0};
-        queue.push_back({left, p.begin, mid, p.depth + 1});
-        queue.push_back({left + 1, mid, p.end, p.depth + 1});
+        level = std::move(next);
     }
     // The jobs, each into a tree of its own (its root first), then appended
     // in the order they were found.
     std::vector<std::vector<Node>> parts(jobs.size());
     run_parallel(parallel, jobs.size(), [&](std::size_t j) {
         parts[j].resize(1);
-        builder.subtree(parts[j], 0, jobs[j].begin, jobs[j].end, jobs[j].depth);
+        builder.subtree(parts[j], 0, jobs[j].begin, jobs[j].end, jobs[j].depth, jobs[j].bounds);
     });
     for (std::size_t j = 0; j < jobs.size(); ++j) {
         const auto offset = static_cast<std::uint32_t>(nodes.size()) - 1;  // part's 1 → offset + 1
