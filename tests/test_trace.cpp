@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -242,6 +243,25 @@ struct Scene {
         for (const Owned& o : owned) objects.push_back(o.view());
     }
 };
+
+// Misses, axis-parallel rays (1/0 in the slab test), part-filled blocks of
+// triangles and empty child slots raise neither an invalid operation (a
+// NaN) nor a division by zero, which the renderers' callers may test for.
+TEST(Accel, RaisesNoInvalidOperationOrDivisionByZero) {
+    const Scene scene;
+    const Accel accel(scene.objects);
+    const std::vector<Ray> rays{
+        {{0.1f, 0.2f, 9.0f}, {0.0f, 0.0f, -1.0f}},  {{9.0f, 0.1f, 0.2f}, {-1.0f, 0.0f, 0.0f}},
+        {{0.3f, 9.0f, -0.2f}, {0.0f, -1.0f, 0.0f}}, {{9.0f, 9.0f, 9.0f}, {-1.0f, -1.0f, -1.0f}},
+        {{9.0f, 9.0f, 9.0f}, {1.0f, 0.0f, 0.0f}},   {{0.0f, 0.0f, 0.0f}, {0.3f, 0.0f, 0.0f}}};
+    std::feclearexcept(FE_ALL_EXCEPT);
+    int found = 0;
+    for (const Ray& ray : rays)
+        found += accel.nearest_front(ray).found() + accel.nearest_back(ray, 0).found();
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID));
+    EXPECT_FALSE(std::fetestexcept(FE_DIVBYZERO));
+    EXPECT_GE(found, 5);
+}
 
 // Random rays in all, three quarters from anywhere and a quarter from
 // inside objects: fewer where the reference is slow (the sanitizers' build

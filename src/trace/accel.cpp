@@ -64,10 +64,11 @@ struct Prepared {
         for (int a = 0; a < 3; ++a) {
             origin[a] = ray.origin[a];
             // 1/0 (and 1/x overflowing) as the largest float: (b − o) · inverse
-            // is then never 0 · ∞.
-            const float i = 1.0f / d[a];
-            inverse[a] =
-                std::isfinite(i) ? i : std::copysign(std::numeric_limits<float>::max(), d[a]);
+            // is then never 0 · ∞, and no division by zero is raised.
+            const float i = d[a] != 0.0f ? 1.0f / d[a] : 0.0f;
+            inverse[a] = d[a] != 0.0f && std::isfinite(i)
+                             ? i
+                             : std::copysign(std::numeric_limits<float>::max(), d[a]);
             o[a] = simd::Floats(origin[a]), inv[a] = simd::Floats(inverse[a]);
             const bool negative = std::signbit(inverse[a]);
             near_row[a] = 2 * a + (negative ? 1 : 0), far_row[a] = 2 * a + (negative ? 0 : 1);
@@ -231,7 +232,8 @@ struct Accel::Impl {
         const simd::Mask facing_ok = facing == Facing::Front ? det > zero : det < zero;
         const Floats t_scaled =
             u * (ray.s_k[2] * z[0]) + v * (ray.s_k[2] * z[1]) + w * (ray.s_k[2] * z[2]);
-        const Floats t = t_scaled / det;
+        // Lanes with det = 0 (empty ones too) divide by 1: no NaN, no flag.
+        const Floats t = t_scaled / xsimd::select(det == zero, Floats(1.0f), det);
         const float limit = std::min(best.t, ray.t_max);
         const simd::Mask in_range = (t > Floats(ray.t_min)) & (t <= Floats(limit));
         unsigned candidates = simd::bits(any_zero | (~mixed & facing_ok & in_range));
@@ -261,7 +263,7 @@ struct Accel::Impl {
         Entry stack[3 * 2 * 96 + 1];
         int size = 0;
         stack[size++] = {root, -std::numeric_limits<float>::infinity()};
-        const Floats t_min(ray.t_min);
+        const Floats t_min(ray.t_min), zero(0.0f), lower(1.0f - margin), upper(1.0f + margin);
         while (size > 0) {
             const Entry e = stack[--size];
             if (e.entry > std::min(best.t, ray.t_max)) continue;
@@ -282,9 +284,10 @@ struct Accel::Impl {
                 }
                 const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
                 const Floats tf = xsimd::min(xsimd::min(t_far[0], t_far[1]), t_far[2]);
-                // Widened by `margin` of their size (NaN from ∞ − ∞: a miss).
-                const Floats tn_c = tn - xsimd::abs(tn) * Floats(margin);
-                const Floats tf_c = tf + xsimd::abs(tf) * Floats(margin);
+                // Widened by `margin` of their size (products, not sums, so
+                // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
+                const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
+                const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
                 unsigned hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
                 if (!hit) break;
                 alignas(16) float entry[4];
