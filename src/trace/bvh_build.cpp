@@ -1,10 +1,12 @@
 // The binned SAH build (bvh_build.hpp). Each node's primitives are a range
-// of one array of references, partitioned in place; a node's passes over
-// them (bounds, then bins) run in chunks on the lent threads when the node
-// is large, and the tree's lower parts, once the ranges are small enough,
-// are built as independent jobs and appended in a fixed order. Minima,
-// maxima and counts merge exactly in any order, so the tree is the same on
-// any number of threads.
+// of one array of references, partitioned in place; the bounds of each
+// side are gathered while partitioning, so a node's one pass of its own is
+// its binning. The root's binning runs in chunks on the lent threads, the
+// next levels split their nodes side by side, and the tree's lower parts,
+// once the ranges are small enough, are built as independent jobs and
+// appended in a fixed order. Minima, maxima and counts merge exactly in any
+// order, so the tree is the same on any number of threads. Ranges of up to
+// 16 primitives split at their median instead of by bins.
 #include "trace/bvh_build.hpp"
 
 #include <algorithm>
