@@ -346,6 +346,11 @@ Accel::Accel(std::span<const MeshView> objects, const ParallelFor& parallel)
                 }
         });
         const build::Tree tree = build::build_tree(boxes, 4, parallel);
+        // A binary tree of L leaves has L − 1 inner nodes, and each node of
+        // four replaces at least one of them.
+        const std::size_t leaves = (tree.nodes.size() + 1) / 2;
+        m.blocks.reserve(m.blocks.size() + leaves);
+        m.nodes.reserve(m.nodes.size() + leaves);
         m.roots[o] = m.collapse(tree, 0, [&](const build::Node& leaf) {
             return m.add_block(mesh, o, std::span(tree.order).subspan(leaf.a, leaf.count));
         });
