@@ -4,17 +4,23 @@
 // Timing only: nothing here passes or fails.
 #include <benchmark/benchmark.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "core/thread_pool.hpp"
 #include "cpu/shade_kernel.hpp"
 #include "litkit/image.hpp"
 #include "litkit/lighting.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
+#include "litkit/shapes.hpp"
+#include "trace/accel.hpp"
 
 namespace {
 
@@ -165,8 +171,87 @@ void BM_WorldMesh261kNormals(benchmark::State& state) {
                    (state.range(1) ? ", crease 60" : ""));
 }
 
+// The tracer's hierarchy over a 261k-triangle sphere (radius 1, 512 × 256):
+// its build on two threads, and rays per second on one thread (as the
+// renderer's threads each trace their own rays) and on two.
+struct TraceSphere {
+    litkit::Mesh mesh = litkit::make_sphere(1.0f, 512, 256);
+    std::vector<litkit::trace::MeshView> objects{{mesh.positions, mesh.triangles}};
+};
+
+litkit::ParallelFor lend(litkit::ThreadPool& pool) {
+    return [&pool](std::size_t count, const litkit::ParallelJob& job) {
+        pool.parallel_for(count, [&](std::size_t i, int) { job(i); });
+    };
+}
+
+void BM_TraceBuild261k(benchmark::State& state) {
+    const TraceSphere sphere;
+    litkit::ThreadPool pool(static_cast<int>(state.range(0)));
+    const litkit::ParallelFor parallel = state.range(0) > 1 ? lend(pool) : litkit::ParallelFor{};
+    for (auto _ : state) {
+        const litkit::trace::Accel accel(sphere.objects, parallel);
+        benchmark::DoNotOptimize(&accel);
+    }
+    state.SetLabel(std::to_string(state.range(0)) + " thread(s)");
+}
+
+// (a) 800 × 600 camera rays from z = 3 towards the sphere (fov 45°, which
+// it about fills vertically), nearest front faces; (b) rays from random
+// points inside it in random directions, nearest back faces.
+std::vector<litkit::trace::Ray> camera_rays() {
+    std::vector<litkit::trace::Ray> rays;
+    const float tan_half = 0.41421356f, aspect = 800.0f / 600.0f;
+    for (int j = 0; j < 600; ++j)
+        for (int i = 0; i < 800; ++i) {
+            const float x = (2.0f * (i + 0.5f) / 800.0f - 1.0f) * tan_half * aspect;
+            const float y = (1.0f - 2.0f * (j + 0.5f) / 600.0f) * tan_half;
+            rays.push_back({{0.0f, 0.0f, 3.0f}, {x, y, -1.0f}});
+        }
+    return rays;
+}
+
+std::vector<litkit::trace::Ray> inside_rays() {
+    std::mt19937 random(1);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<litkit::trace::Ray> rays;
+    while (rays.size() < 480'000) {
+        const glm::vec3 p(unit(random), unit(random), unit(random));
+        if (glm::dot(p, p) > 0.81f) continue;
+        rays.push_back({p, {unit(random), unit(random), unit(random)}});
+    }
+    return rays;
+}
+
+void trace_rays(benchmark::State& state, const std::vector<litkit::trace::Ray>& rays, bool inside) {
+    const TraceSphere sphere;
+    const litkit::trace::Accel accel(sphere.objects);
+    const int threads = static_cast<int>(state.range(0));
+    litkit::ThreadPool pool(threads);
+    std::vector<std::size_t> found(static_cast<std::size_t>(threads) * 16);
+    for (auto _ : state) {
+        const std::size_t bands = 64, band = rays.size() / bands;
+        pool.parallel_for(bands, [&](std::size_t b, int worker) {
+            std::size_t hits = 0;
+            for (std::size_t i = b * band; i < (b + 1) * band; ++i)
+                hits += (inside ? accel.nearest_back(rays[i], 0) : accel.nearest_front(rays[i]))
+                            .found();
+            found[static_cast<std::size_t>(worker) * 16] += hits;
+        });
+    }
+    benchmark::DoNotOptimize(found.data());
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(rays.size() / 64 * 64));
+    state.SetLabel(std::to_string(threads) + " thread(s)");
+}
+
+void BM_TraceCameraRays800x600(benchmark::State& state) { trace_rays(state, camera_rays(), false); }
+void BM_TraceInsideRays(benchmark::State& state) { trace_rays(state, inside_rays(), true); }
+
 }  // namespace
 
+BENCHMARK(BM_TraceBuild261k)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TraceCameraRays800x600)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TraceInsideRays)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_WorldMesh261kNormals)
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
     ->Unit(benchmark::kMillisecond);

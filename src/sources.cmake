@@ -17,9 +17,10 @@ set(LITKIT_LAYER_SOURCES_scene
     scene/validate.cpp scene/words.cpp scene/write.cpp)
 # trace: refraction's rays (docs/spec.md §10), the hierarchy and the ray tree.
 set(LITKIT_LAYER_SOURCES_trace
-    trace/accel.cpp trace/ray_tree.cpp)
+    trace/accel.cpp trace/bvh_build.cpp trace/ray_tree.cpp)
 set(LITKIT_LAYER_SOURCES_cpu
-    cpu/clip.cpp cpu/fragment.cpp cpu/glass.cpp cpu/prepare.cpp cpu/rasterize.cpp cpu/render.cpp cpu/setup.cpp
+    cpu/clip.cpp cpu/fragment.cpp cpu/glass.cpp cpu/prepare.cpp cpu/rasterize.cpp cpu/render.cpp
+    cpu/setup.cpp
     cpu/shade_kernel.cpp cpu/shade_kernel_avx2.cpp cpu/shade_kernel_avx512.cpp
     cpu/shade_kernel_portable.cpp cpu/vertex.cpp)
 # codegen also compiles embedded_text.cpp, generated in the build tree.

@@ -1,13 +1,38 @@
-// The tracer's acceleration structure (accel.hpp). For now every query
-// tests every triangle of the objects it may hit; the hierarchy replaces
-// this loop, with the same answers.
+// The tracer's acceleration structure (accel.hpp): a four-wide bounding-
+// volume hierarchy per object and one over the objects, in one array of
+// nodes. The top hierarchy's leaf for an object is that object's root, so
+// that nearest_front walks the whole scene in one loop (no second stack, no
+// per-object set-up) while nearest_back(o) starts at o's root and sees o's
+// triangles alone; one hierarchy per object also keeps objects apart that
+// one over all triangles would mix (a glass sphere inside a room's walls).
+//
+// Each hierarchy is collapsed from a binary SAH tree (bvh_build.cpp) by
+// opening, at each node, the child of largest area until it has four: a
+// node holds its children's boxes as four lanes per plane (one SIMD test
+// for all four, simd.hpp), and a leaf is one block of up to four triangles'
+// corners, also as lanes, tested at once. The traversal enters children
+// nearest first and stops at the best hit so far.
+//
+// Exactly the answers of testing every triangle: boxes are tested
+// conservatively (padded, entry and exit distances widened by a relative
+// margin far above the rounding of the slab test and of the triangle
+// test's shear), a subtree is skipped only when its entry lies beyond the
+// best hit so far (a tie at the same distance may still win by its smaller
+// index), and every triangle the four-wide test does not rule out is
+// decided by the one scalar watertight test below, whose operations the
+// four-wide test repeats exactly (lanes with an edge function of 0, which
+// the scalar test recomputes in double, always go to it).
 #include "trace/accel.hpp"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
+
+#include "trace/bvh_build.hpp"
+#include "trace/simd.hpp"
 
 namespace litkit::trace {
 
@@ -15,18 +40,56 @@ namespace {
 
 enum class Facing { Front, Back };
 
+constexpr float margin = 0x1p-19f;  // relative widening of boxes and box distances
+
+// What the triangle test and the box test need of a ray, computed once.
+struct Prepared {
+    float origin[3], inverse[3];
+    int kx, ky, kz;
+    float sx, sy, sz;
+    float t_min, t_max;
+    // Broadcast: the box planes' origin and inverse direction per axis, and
+    // which plane of each axis the ray meets first (the node's row).
+    simd::Floats o[3], inv[3];
+    int near_row[3], far_row[3];
+    simd::Floats o_k[3], s_k[3];  // origin along kx, ky, kz; sx, sy, sz
+
+    explicit Prepared(const Ray& ray) : t_min(ray.t_min), t_max(ray.t_max) {
+        const glm::vec3& d = ray.direction;
+        const glm::vec3 a_abs = glm::abs(d);
+        kz = a_abs.x > a_abs.y ? (a_abs.x > a_abs.z ? 0 : 2) : (a_abs.y > a_abs.z ? 1 : 2);
+        kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+        if (d[kz] < 0.0f) std::swap(kx, ky);
+        sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.0f / d[kz];
+        for (int a = 0; a < 3; ++a) {
+            origin[a] = ray.origin[a];
+            // 1/0 (and 1/x overflowing) as the largest float: (b − o) · inverse
+            // is then never 0 · ∞, and no division by zero is raised.
+            const float i = d[a] != 0.0f ? 1.0f / d[a] : 0.0f;
+            inverse[a] = d[a] != 0.0f && std::isfinite(i)
+                             ? i
+                             : std::copysign(std::numeric_limits<float>::max(), d[a]);
+            o[a] = simd::Floats(origin[a]), inv[a] = simd::Floats(inverse[a]);
+            const bool negative = std::signbit(inverse[a]);
+            near_row[a] = 2 * a + (negative ? 1 : 0), far_row[a] = 2 * a + (negative ? 0 : 1);
+        }
+        const int k[3] = {kx, ky, kz};
+        const float s[3] = {sx, sy, sz};
+        for (int i = 0; i < 3; ++i)
+            o_k[i] = simd::Floats(origin[k[i]]), s_k[i] = simd::Floats(s[i]);
+    }
+};
+
 // Woop, Benthin and Wald's watertight test of one triangle; updates `best`
 // when the triangle is hit closer (or as close, by a smaller index) with the
 // facing asked for.
-void intersect(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+void intersect(const Prepared& ray, const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                Facing facing, std::uint32_t object, std::uint32_t triangle, Hit& best) {
-    const glm::vec3& d = ray.direction;
-    const glm::vec3 a_abs = glm::abs(d);
-    int kz = a_abs.x > a_abs.y ? (a_abs.x > a_abs.z ? 0 : 2) : (a_abs.y > a_abs.z ? 1 : 2);
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0.0f) std::swap(kx, ky);
-    const float sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.0f / d[kz];
-    const glm::vec3 a = p0 - ray.origin, b = p1 - ray.origin, c = p2 - ray.origin;
+    const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+    const float sx = ray.sx, sy = ray.sy, sz = ray.sz;
+    const float a[3] = {p0.x - ray.origin[0], p0.y - ray.origin[1], p0.z - ray.origin[2]};
+    const float b[3] = {p1.x - ray.origin[0], p1.y - ray.origin[1], p1.z - ray.origin[2]};
+    const float c[3] = {p2.x - ray.origin[0], p2.y - ray.origin[1], p2.z - ray.origin[2]};
     const float ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
     const float bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
     const float cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
@@ -51,40 +114,266 @@ void intersect(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const g
     best = Hit{t, object, triangle, v / det, w / det};
 }
 
+// A box widened by `margin` of its largest coordinate (and by the smallest
+// normal float, for a box at the origin).
+build::Box padded(const build::Box& box) {
+    float largest = 0.0f;
+    for (int a = 0; a < 3; ++a)
+        largest = std::max({largest, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    const float pad = largest * margin + std::numeric_limits<float>::min();
+    build::Box out = box;
+    for (int a = 0; a < 3; ++a) out.lo[a] -= pad, out.hi[a] += pad;
+    return out;
+}
+
+// Four children: their boxes as lanes, row 2a the lower and 2a + 1 the
+// upper planes of axis a; a child is a node's index, or leaf_bit | a
+// block's index, or `empty` (an empty box, which no ray enters).
+struct alignas(64) Node4 {
+    float box[6][4];
+    std::uint32_t child[4];
+};
+constexpr std::uint32_t leaf_bit = 0x80000000u, empty = ~0u;
+
+// Up to four triangles of one object: corner v's coordinate a in row 3v + a.
+struct alignas(16) Block {
+    float corner[9][4];
+    std::uint32_t triangle[4];
+    std::uint32_t object, count;
+};
+
 }  // namespace
 
 struct Accel::Impl {
     std::vector<MeshView> objects;
+    std::vector<Node4> nodes;
+    std::vector<Block> blocks;
+    std::vector<std::uint32_t> roots;  // per object: its root (a child), or empty
+    std::uint32_t top = empty;
+
+    // Collapses binary node `at` of `tree` (see the top of the file); a
+    // binary leaf becomes leaf(node).
+    template <class Leaf>
+    std::uint32_t collapse(const build::Tree& tree, std::uint32_t at, const Leaf& leaf) {
+        const build::Node& node = tree.nodes[at];
+        if (node.count > 0) return leaf(node);
+        std::uint32_t open[4] = {node.a, node.b};
+        int size = 2;
+        while (size < 4) {
+            int widest = -1;
+            float widest_area = -1.0f;
+            for (int i = 0; i < size; ++i) {
+                const build::Node& c = tree.nodes[open[i]];
+                if (c.count > 0) continue;
+                float d[3];
+                for (int a = 0; a < 3; ++a) d[a] = c.box.hi[a] - c.box.lo[a];
+                const float area = d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+                if (area > widest_area) widest = i, widest_area = area;
+            }
+            if (widest < 0) break;
+            const build::Node& c = tree.nodes[open[widest]];
+            open[widest] = c.a, open[size++] = c.b;
+        }
+        const auto index = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        Node4 out{};
+        for (int i = 0; i < 4; ++i) {
+            if (i >= size) {
+                out.child[i] = empty;
+                for (int a = 0; a < 3; ++a)
+                    out.box[2 * a][i] = std::numeric_limits<float>::infinity(),
+                                out.box[2 * a + 1][i] = -std::numeric_limits<float>::infinity();
+                continue;
+            }
+            const build::Box box = padded(tree.nodes[open[i]].box);
+            for (int a = 0; a < 3; ++a)
+                out.box[2 * a][i] = box.lo[a], out.box[2 * a + 1][i] = box.hi[a];
+            out.child[i] = collapse(tree, open[i], leaf);
+        }
+        nodes[index] = out;
+        return index;
+    }
+
+    std::uint32_t add_block(const MeshView& mesh, std::uint32_t object,
+                            std::span<const std::uint32_t> triangles) {
+        Block block{};
+        block.object = object;
+        block.count = static_cast<std::uint32_t>(triangles.size());
+        for (std::uint32_t l = 0; l < block.count; ++l) {
+            block.triangle[l] = triangles[l];
+            const auto& tri = mesh.triangles[triangles[l]];
+            for (int v = 0; v < 3; ++v)
+                for (int a = 0; a < 3; ++a) block.corner[3 * v + a][l] = mesh.positions[tri[v]][a];
+        }
+        blocks.push_back(block);
+        return leaf_bit | static_cast<std::uint32_t>(blocks.size() - 1);
+    }
+
+    void prefetch(std::uint32_t child) const {
+        const char* at = child & leaf_bit
+                             ? reinterpret_cast<const char*>(&blocks[child & ~leaf_bit])
+                             : reinterpret_cast<const char*>(&nodes[child]);
+        for (std::size_t line = 0; line < (child & leaf_bit ? sizeof(Block) : sizeof(Node4));
+             line += 64)
+            __builtin_prefetch(at + line);
+    }
+
+    void test_block(const Prepared& ray, const Block& block, Facing facing, Hit& best) const {
+        using simd::Floats;
+        const int k[3] = {ray.kx, ray.ky, ray.kz};
+        // Corner v relative to the origin along kz, and sheared along kx, ky.
+        Floats z[3], x[3], y[3];
+        for (int v = 0; v < 3; ++v) {
+            z[v] = Floats::load_aligned(block.corner[3 * v + k[2]]) - ray.o_k[2];
+            x[v] =
+                (Floats::load_aligned(block.corner[3 * v + k[0]]) - ray.o_k[0]) - ray.s_k[0] * z[v];
+            y[v] =
+                (Floats::load_aligned(block.corner[3 * v + k[1]]) - ray.o_k[1]) - ray.s_k[1] * z[v];
+        }
+        const Floats u = x[2] * y[1] - y[2] * x[1];
+        const Floats v = x[0] * y[2] - y[0] * x[2];
+        const Floats w = x[1] * y[0] - y[1] * x[0];
+        const Floats zero(0.0f);
+        const simd::Mask any_zero = (u == zero) | (v == zero) | (w == zero);
+        const simd::Mask mixed =
+            ((u < zero) | (v < zero) | (w < zero)) & ((u > zero) | (v > zero) | (w > zero));
+        const Floats det = u + v + w;
+        const simd::Mask facing_ok = facing == Facing::Front ? det > zero : det < zero;
+        const Floats t_scaled =
+            u * (ray.s_k[2] * z[0]) + v * (ray.s_k[2] * z[1]) + w * (ray.s_k[2] * z[2]);
+        // Lanes with det = 0 (empty ones too) divide by 1: no NaN, no flag.
+        const Floats t = t_scaled / xsimd::select(det == zero, Floats(1.0f), det);
+        const float limit = std::min(best.t, ray.t_max);
+        const simd::Mask in_range = (t > Floats(ray.t_min)) & (t <= Floats(limit));
+        unsigned candidates = simd::bits(any_zero | (~mixed & facing_ok & in_range));
+        candidates &= (1u << block.count) - 1u;
+        while (candidates) {
+            const int l = __builtin_ctz(candidates);
+            candidates &= candidates - 1;
+            const auto corner = [&](int c) {
+                return glm::vec3(block.corner[3 * c][l], block.corner[3 * c + 1][l],
+                                 block.corner[3 * c + 2][l]);
+            };
+            intersect(ray, corner(0), corner(1), corner(2), facing, block.object, block.triangle[l],
+                      best);
+        }
+    }
+
+    Hit traverse(const Prepared& ray, std::uint32_t root, Facing facing) const {
+        using simd::Floats;
+        Hit best;
+        if (root == empty) return best;
+        struct Entry {
+            std::uint32_t child;
+            float entry;
+        };
+        // Three entries a level at most, and a binary tree's depth is at most
+        // 64 + 32 (bvh_build.cpp), in the top hierarchy and in an object's.
+        Entry stack[3 * 2 * 96 + 1];
+        int size = 0;
+        stack[size++] = {root, -std::numeric_limits<float>::infinity()};
+        const Floats t_min(ray.t_min), zero(0.0f), lower(1.0f - margin), upper(1.0f + margin);
+        while (size > 0) {
+            const Entry e = stack[--size];
+            if (e.entry > std::min(best.t, ray.t_max)) continue;
+            std::uint32_t child = e.child;
+            while (true) {
+                if (child & leaf_bit) {
+                    test_block(ray, blocks[child & ~leaf_bit], facing, best);
+                    break;
+                }
+                const Node4& node = nodes[child];
+                const Floats limit(std::min(best.t, ray.t_max));
+                Floats t_near[3], t_far[3];
+                for (int a = 0; a < 3; ++a) {
+                    t_near[a] =
+                        (Floats::load_aligned(node.box[ray.near_row[a]]) - ray.o[a]) * ray.inv[a];
+                    t_far[a] =
+                        (Floats::load_aligned(node.box[ray.far_row[a]]) - ray.o[a]) * ray.inv[a];
+                }
+                const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
+                const Floats tf = xsimd::min(xsimd::min(t_far[0], t_far[1]), t_far[2]);
+                // Widened by `margin` of their size (products, not sums, so
+                // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
+                const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
+                const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
+                unsigned hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
+                if (!hit) break;
+                // Fetch the children entered while they are sorted (random
+                // rays wait on memory more than on arithmetic).
+                for (unsigned h = hit; h; h &= h - 1) prefetch(node.child[__builtin_ctz(h)]);
+                alignas(16) float entry[4];
+                xsimd::max(tn_c, t_min).store_aligned(entry);
+                if ((hit & (hit - 1)) == 0) {  // one child
+                    child = node.child[__builtin_ctz(hit)];
+                    continue;
+                }
+                // Nearest first: the others go on the stack, farthest deepest.
+                Entry order[4];
+                int n = 0;
+                for (; hit; hit &= hit - 1) {
+                    const int i = __builtin_ctz(hit);
+                    Entry c{node.child[i], entry[i]};
+                    int j = n++;
+                    for (; j > 0 && order[j - 1].entry < c.entry; --j) order[j] = order[j - 1];
+                    order[j] = c;
+                }
+                for (int i = 0; i < n - 1; ++i) stack[size++] = order[i];
+                child = order[n - 1].child;
+            }
+        }
+        return best;
+    }
 };
 
-Accel::Accel(std::span<const MeshView> objects, const ParallelFor&)
-    : impl_(std::make_unique<Impl>(Impl{{objects.begin(), objects.end()}})) {}
+Accel::Accel(std::span<const MeshView> objects, const ParallelFor& parallel)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.objects.assign(objects.begin(), objects.end());
+    m.roots.assign(objects.size(), empty);
+    std::vector<build::Box> object_boxes;
+    std::vector<std::uint32_t> placed;  // the objects with triangles
+    for (std::uint32_t o = 0; o < objects.size(); ++o) {
+        const MeshView& mesh = objects[o];
+        if (mesh.triangles.empty()) continue;
+        std::vector<build::Box> boxes(mesh.triangles.size());
+        parallel_chunks(parallel, boxes.size(), 4096, [&](std::size_t i) {
+            build::Box& box = boxes[i];
+            for (const std::uint32_t v : mesh.triangles[i])
+                for (int a = 0; a < 3; ++a) {
+                    box.lo[a] = std::min(box.lo[a], mesh.positions[v][a]);
+                    box.hi[a] = std::max(box.hi[a], mesh.positions[v][a]);
+                }
+        });
+        const build::Tree tree = build::build_tree(boxes, 4, parallel);
+        // A binary tree of L leaves has L − 1 inner nodes, and each node of
+        // four replaces at least one of them.
+        const std::size_t leaves = (tree.nodes.size() + 1) / 2;
+        m.blocks.reserve(m.blocks.size() + leaves);
+        m.nodes.reserve(m.nodes.size() + leaves);
+        m.roots[o] = m.collapse(tree, 0, [&](const build::Node& leaf) {
+            return m.add_block(mesh, o, std::span(tree.order).subspan(leaf.a, leaf.count));
+        });
+        object_boxes.push_back(tree.nodes[0].box);
+        placed.push_back(o);
+    }
+    if (placed.empty()) return;
+    const build::Tree top = build::build_tree(object_boxes, 1, parallel);
+    m.top = m.collapse(top, 0, [&](const build::Node& leaf) {  // an object's root in its place
+        return m.roots[placed[top.order[leaf.a]]];
+    });
+}
 Accel::~Accel() = default;
 Accel::Accel(Accel&&) noexcept = default;
 Accel& Accel::operator=(Accel&&) noexcept = default;
 
 Hit Accel::nearest_front(const Ray& ray) const {
-    Hit best;
-    for (std::uint32_t o = 0; o < impl_->objects.size(); ++o) {
-        const MeshView& mesh = impl_->objects[o];
-        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-            const auto& tri = mesh.triangles[t];
-            intersect(ray, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
-                      Facing::Front, o, t, best);
-        }
-    }
-    return best;
+    return impl_->traverse(Prepared(ray), impl_->top, Facing::Front);
 }
 
 Hit Accel::nearest_back(const Ray& ray, std::uint32_t object) const {
-    Hit best;
-    const MeshView& mesh = impl_->objects[object];
-    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-        const auto& tri = mesh.triangles[t];
-        intersect(ray, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
-                  Facing::Back, object, t, best);
-    }
-    return best;
+    if (object >= impl_->roots.size()) return Hit{};
+    return impl_->traverse(Prepared(ray), impl_->roots[object], Facing::Back);
 }
 
 }  // namespace litkit::trace
