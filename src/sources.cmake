@@ -8,13 +8,13 @@ set(LITKIT_LAYER_SOURCES_core
 set(LITKIT_LAYER_SOURCES_lighting
     lighting/lighting.cpp)
 set(LITKIT_LAYER_SOURCES_geometry
-    geometry/convex.cpp geometry/mesh_data.cpp geometry/mesh_formats.cpp geometry/normals.cpp
+    geometry/closed_mesh.cpp geometry/convex.cpp geometry/mesh_data.cpp geometry/mesh_formats.cpp geometry/normals.cpp
     geometry/obj.cpp geometry/obj_numbers.cpp geometry/shapes.cpp geometry/teapot.cpp
     geometry/tinyobjloader.cpp geometry/weld.cpp)
 set(LITKIT_LAYER_SOURCES_scene
     scene/camera.cpp scene/default_scene.cpp scene/float_range.cpp scene/load.cpp
     scene/nesting.cpp scene/read_tables.cpp scene/read_values.cpp scene/scene.cpp scene/toml.cpp
-    scene/validate.cpp scene/words.cpp scene/write.cpp)
+    scene/transparency.cpp scene/validate.cpp scene/words.cpp scene/write.cpp)
 # trace: refraction's rays (docs/spec.md §10), the hierarchy and the ray tree.
 set(LITKIT_LAYER_SOURCES_trace
     trace/accel.cpp trace/bvh_build.cpp trace/ray_tree.cpp)

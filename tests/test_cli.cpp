@@ -500,3 +500,101 @@ TEST_F(Cli, FileNormalsOnAMeshWithoutThemIsInvalidInputAtTheMeshLine) {
     EXPECT_NE(checked.output.find("square.obj:7: error: "), std::string::npos) << checked.output;
     EXPECT_EQ(run_cli("check scene.toml", dir).status, 0);
 }
+
+namespace {
+
+// docs/spec.md §10: a glass cube (the closed cube of tests/data/obj), or
+// with `cube_file` another mesh. The object is on line 16.
+std::string glass_scene(const std::string& cube_file = "closed_cube.obj") {
+    return R"([room]
+width = 10
+height = 10
+depth = 10
+[observer]
+position = [0, 1, 4]
+[lighting]
+reflection = "phong"
+shading = "phong"
+[output]
+width = 64
+height = 48
+[[lights]]
+type = "point"
+position = [0, 3, 3]
+[[objects]]
+name = "glass"
+type = "mesh"
+file = ")" +
+           (fs::path(LITKIT_TEST_DATA) / "obj" / cube_file).string() +
+           R"("
+material = { transmission = 0.5, ior = 1.5 }
+)";
+}
+
+}  // namespace
+
+TEST_F(Cli, MaxDepthIsAnOptionOfEveryCommandThatRenders) {
+    for (const char* command : {"render", "compare", "turntable", "explain", "view", "bench"}) {
+        const CliRun help = run_cli(std::string(command) + " --help", dir);
+        EXPECT_EQ(help.status, 0) << command;
+        EXPECT_NE(help.output.find("--max-depth"), std::string::npos) << command;
+    }
+    // 1–16 (docs/spec.md §10.1), an integer.
+    for (const char* value : {"0", "17", "2.5", "deep"}) {
+        const CliRun run = run_cli(std::string("render --max-depth ") + value, dir);
+        EXPECT_EQ(run.status, 2) << value << ": " << run.output;
+    }
+    EXPECT_EQ(run_cli("bench --max-depth 0", dir).status, 2);
+    EXPECT_FALSE(fs::exists(dir / "default.png"));
+    // The ends of the range; without glass the picture does not change.
+    ASSERT_EQ(run_cli("render -o plain.png", dir).status, 0);
+    ASSERT_EQ(run_cli("render --max-depth 1 -o one.png", dir).status, 0);
+    ASSERT_EQ(run_cli("render --max-depth 16 -o sixteen.png", dir).status, 0);
+    EXPECT_EQ(read("plain.png"), read("one.png"));
+    EXPECT_EQ(read("plain.png"), read("sixteen.png"));
+}
+
+TEST_F(Cli, CheckReportsAnOpenMeshThatRefractsAtTheObject) {
+    write("open.toml", glass_scene("open_cube.obj"));
+    const CliRun open = run_cli("check open.toml", dir);
+    EXPECT_EQ(open.status, 2) << open.output;
+    EXPECT_NE(open.output.find("open.toml:16:1: error: objects[0] 'glass': transmission 0.5 needs "
+                               "a closed mesh (docs/spec.md §10.1), and mesh file 'open_cube.obj' "
+                               "is not closed: its edge from [0.5, 0.5, 0.5] to [-0.5, 0.5, "
+                               "0.5] (face 1, line 13) belongs to one triangle only"),
+              std::string::npos)
+        << open.output;
+    write("closed.toml", glass_scene());
+    const CliRun closed = run_cli("check closed.toml", dir);
+    EXPECT_EQ(closed.status, 0) << closed.output;
+}
+
+TEST_F(Cli, GlassIsRefusedByOpenGlAndTheExportsAndDrawnOnTheCpu) {
+    write("glass.toml", glass_scene());
+    const std::string says =
+        " does not draw refraction yet (docs/spec.md §10): objects[0] 'glass' has transmission "
+        "0.5; the CPU backend does (--backend cpu)";
+    const CliRun gl = run_cli("render glass.toml --backend gl -o gl.png", dir);
+    EXPECT_EQ(gl.status, 2) << gl.output;
+    EXPECT_NE(gl.output.find("error: the OpenGL backend" + says), std::string::npos) << gl.output;
+    EXPECT_FALSE(fs::exists(dir / "gl.png"));
+    const CliRun glsl = run_cli("export glass.toml --format glsl -o shaders", dir);
+    EXPECT_EQ(glsl.status, 2) << glsl.output;
+    EXPECT_NE(glsl.output.find("the GLSL export" + says), std::string::npos) << glsl.output;
+    const CliRun cpp = run_cli("export glass.toml --format cpp -o program", dir);
+    EXPECT_EQ(cpp.status, 2) << cpp.output;
+    EXPECT_NE(cpp.output.find("the C++ export" + says), std::string::npos) << cpp.output;
+    EXPECT_FALSE(fs::exists(dir / "shaders"));
+    EXPECT_FALSE(fs::exists(dir / "program"));
+    // The CPU backend takes it.
+    const CliRun cpu = run_cli("render glass.toml --max-depth 3 -o cpu.png", dir);
+    EXPECT_EQ(cpu.status, 0) << cpu.output;
+    // The controls: the same keys with transmission 0 go everywhere.
+    std::string opaque = glass_scene();
+    opaque.replace(opaque.find("transmission = 0.5"), 18, "transmission = 0.0");
+    write("opaque.toml", opaque);
+    const CliRun opaque_gl = run_cli("render opaque.toml --backend gl -o opaque.png", dir);
+    if (opaque_gl.output.find("OpenGL is not available") == std::string::npos)
+        EXPECT_EQ(opaque_gl.status, 0) << opaque_gl.output;
+    EXPECT_EQ(run_cli("export opaque.toml --format glsl -o shaders", dir).status, 0);
+}

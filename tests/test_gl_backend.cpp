@@ -374,3 +374,46 @@ TEST(GlBackend, MatchesCpuOnAScaledScene) {
         expect_edges_and_background_agree(c.agreement);
     }
 }
+
+namespace {
+
+// What the refusal says, after "the OpenGL backend" (docs/spec.md §10).
+std::string refusal(const std::string& object) {
+    return "the OpenGL backend does not draw refraction yet (docs/spec.md §10): " + object +
+           " has transmission 0.5; the CPU backend does (--backend cpu)";
+}
+
+}  // namespace
+
+TEST(GlBackend, RefusesGlassRatherThanDrawSomethingElse) {
+    litkit::Scene scene = matrix_scene(Shape::Cube, LightType::Point, litkit::Reflection::Phong,
+                                       litkit::Shading::Phong);
+    // The control: every refraction key but transmission changes nothing.
+    litkit::Scene keys = scene;
+    keys.room.ior = 1.33f;
+    keys.max_depth = 2;
+    keys.objects[0].material.ior = 2.42f;
+    keys.objects[0].material.absorption_color = {0.2f, 0.4f, 1.0f};
+    keys.objects[0].material.absorption_distance = 0.5f;
+    litkit::GlRenderer gl(keys);
+    EXPECT_EQ(gl.render().rgb, litkit::GlRenderer(scene).render().rgb);
+
+    litkit::Scene glass = keys;
+    glass.objects[0].name = "glass";
+    glass.objects[0].material.transmission = 0.5f;
+    try {
+        litkit::GlRenderer refused(glass);
+        ADD_FAILURE() << "drew glass";
+    } catch (const litkit::ArgumentError& error) {
+        EXPECT_EQ(std::string(error.what()), refusal("objects[0] 'glass'"));
+    }
+    // update() too, with the material alone changed (the path that keeps
+    // the programs), and the renderer keeps its scene.
+    try {
+        gl.update(glass);
+        ADD_FAILURE() << "update drew glass";
+    } catch (const litkit::ArgumentError& error) {
+        EXPECT_EQ(std::string(error.what()), refusal("objects[0] 'glass'"));
+    }
+    EXPECT_EQ(gl.render().rgb, litkit::GlRenderer(scene).render().rgb);
+}

@@ -20,6 +20,7 @@
 #include "litkit/lighting.hpp"
 #include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
+#include "litkit/scene.hpp"
 
 namespace {
 
@@ -330,4 +331,19 @@ TEST(DocsTables, EveryImageSizeRangeIsTheLibrarysLimit) {
             }
         }
     }
+}
+
+TEST(DocsTables, MaxDepthsRangeAndDefaultAreTheLibrarys) {
+    // docs/spec.md §10.1: [lighting] max_depth, and --max-depth.
+    const std::string range =
+        std::to_string(litkit::min_max_depth) + "–" + std::to_string(litkit::max_max_depth);
+    const std::string row = table_row("| `max_depth` | integer, default `" +
+                                      std::to_string(litkit::default_max_depth) + "` |");
+    EXPECT_NE(row.find("| " + range + " |"), std::string::npos) << row;
+    const std::string option = table_row("| `--max-depth N` |", "user-guide.md");
+    EXPECT_NE(option.find(range), std::string::npos) << option;
+    const std::string spec = table_row("| `[lighting]` | `max_depth` |", "spec.md");
+    EXPECT_NE(spec.find("integer " + range + " | " + std::to_string(litkit::default_max_depth)),
+              std::string::npos)
+        << spec;
 }

@@ -4,6 +4,7 @@
 
 #include "crossing.hpp"
 #include "modules.hpp"
+#include "usage_error.hpp"
 
 namespace litkit_cli {
 
@@ -36,6 +37,9 @@ GlModuleBackend::GlModuleBackend(const litkit::Scene& scene, const litkit::Rende
     renderer_ = open_module<GlModule, litkit::RenderOptions>("litkit-gl.so", "litkit_gl_module",
                                                              "--backend gl")
                     .create(scene, options, error);
+    // An argument the backend cannot take (a scene with glass, which OpenGL
+    // does not draw yet) is a usage problem: exit status 2, as for export.
+    if (!renderer_ && error.kind == CaughtError::Kind::Argument) throw UsageError{error.what};
     if (!renderer_) throw_again(error);
 }
 

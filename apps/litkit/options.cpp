@@ -87,6 +87,11 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
         ->capture_default_str();
     if (!rendering) return;
     command
+        ->add_option("--max-depth", arguments.max_depth,
+                     "Surface interactions along one ray path through glass, the first hit "
+                     "included (docs/spec.md §10)")
+        ->check(CLI::Range(litkit::min_max_depth, litkit::max_max_depth));
+    command
         ->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, litkit::max_render_threads));
     // litkit::backends(): every backend with what it is.
@@ -119,6 +124,7 @@ litkit::Scene load(const SceneArguments& arguments) {
     if (arguments.shading) scene.shading = litkit::parse_shading(*arguments.shading);
     if (arguments.normals) scene.normals = litkit::parse_normals(*arguments.normals);
     if (arguments.crease_angle) scene.crease_angle_degrees = *arguments.crease_angle;
+    if (arguments.max_depth) scene.max_depth = *arguments.max_depth;
     if (arguments.normals || arguments.crease_angle) {
         // docs/spec.md §9.2: `--normals file` asks every mesh file for a
         // normal at each face corner; validating again reports one that

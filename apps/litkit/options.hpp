@@ -24,8 +24,9 @@ struct SceneArguments {
     std::optional<std::string> shading;
     std::optional<std::string> normals;
     std::optional<float> crease_angle;
-    std::optional<int> threads;   // CPU backend only; none: one per core
-    std::string backend = "cpu";  // a name of litkit::backends(); backend_id() reads it
+    std::optional<int> max_depth;  // docs/spec.md §10.2 item 9; replaces [lighting] max_depth
+    std::optional<int> threads;    // CPU backend only; none: one per core
+    std::string backend = "cpu";   // a name of litkit::backends(); backend_id() reads it
     std::uint64_t max_triangles = litkit::default_triangle_budget;  // docs/reliability.md
 
     // The backend --backend named (CLI11 lets through only names it has).

@@ -33,7 +33,8 @@ struct ExportOptions {
 /// "<reflection>-<shading>.vert" and ".frag" (GLSL 3.30 core, the uniforms
 /// they expect documented at their top), sized for the scene's lights. The
 /// folder's files are written all or none (write_folder_atomically). Returns the paths written;
-/// throws IoError.
+/// throws IoError, and ArgumentError for a scene where some object's
+/// transmission is above 0 (refraction, docs/spec.md §10, is not exported yet).
 std::vector<std::filesystem::path> export_glsl(const Scene& scene,
                                                const std::filesystem::path& directory,
                                                const ExportOptions& options = {});
@@ -44,7 +45,8 @@ std::vector<std::filesystem::path> export_glsl(const Scene& scene,
 /// window with --window (built where SDL2 is found). `scene_label` names the
 /// scene in the program's comments. Returns the paths written; throws IoError
 /// (also for an unreadable mesh file) or ArgumentError for a bad
-/// program name.
+/// program name or a scene where some object's transmission is above 0
+/// (refraction, docs/spec.md §10, is not exported yet).
 std::vector<std::filesystem::path> export_cpp(const Scene& scene,
                                               const std::filesystem::path& directory,
                                               const std::string& program_name,

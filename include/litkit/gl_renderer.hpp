@@ -34,6 +34,9 @@ class GlRenderer {
     /// Creates the context, compiles the programs and uploads every object's
     /// world-space vertices. Throws GlError, or IoError for an unreadable
     /// mesh file. `options.threads` and `options.kernels` do not apply.
+    /// Refraction (docs/spec.md §10) is not drawn yet: a scene where some
+    /// object's transmission is above 0 is refused with ArgumentError, here
+    /// and in update() (the CPU renderer draws it).
     explicit GlRenderer(const Scene& scene, RenderOptions options = {});
     /// Draws with the OpenGL (3.3 core or later) context current on this
     /// thread, such as a window's (litkit view), instead of a headless one of

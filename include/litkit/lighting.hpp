@@ -132,15 +132,28 @@ struct Material {
     float ks = 0.5f;
     /// α, the specular exponent (≥ 0) of the models with a highlight.
     float shininess = 32.0f;
-    float sigma = 30.0f;        ///< oren-nayar: surface roughness σ in degrees
-    float roughness = 0.5f;     ///< cook-torrance: perceptual roughness r
-    float f0 = 0.04f;           ///< cook-torrance: reflectance at normal incidence
-    float bands = 3.0f;         ///< toon: how many diffuse levels (a whole number)
-    float minnaert_k = 1.5f;    ///< minnaert: limb darkening k
-    float transmission = 0.0f;  ///< docs/spec.md §10: t
-    float ior = 1.5f;           ///< docs/spec.md §10: n_o
-    glm::vec3 absorption_color{1.0f, 1.0f, 1.0f};  ///< docs/spec.md §10: a/255
-    float absorption_distance = 1.0f;              ///< docs/spec.md §10: D
+    float sigma = 30.0f;      ///< oren-nayar: surface roughness σ in degrees
+    float roughness = 0.5f;   ///< cook-torrance: perceptual roughness r
+    float f0 = 0.04f;         ///< cook-torrance: reflectance at normal incidence
+    float bands = 3.0f;       ///< toon: how many diffuse levels (a whole number)
+    float minnaert_k = 1.5f;  ///< minnaert: limb darkening k
+    // Refraction (docs/spec.md §10.1): accepted on every object, whatever its
+    // model, and without effect while transmission is 0.
+    /// t, in [0, 1]: the share of the surface's ambient and diffuse light
+    /// replaced by refraction and mirror reflection (docs/spec.md §10.2 item
+    /// 8); 0 (the default) is opaque. Above 0 the object must be a closed mesh.
+    float transmission = 0.0f;
+    /// n_o, in [1, 3]: the refractive index of the object's interior (water
+    /// 1.33, glass 1.5, diamond 2.42).
+    float ior = 1.5f;
+    /// a: the colour white light turns into after absorption_distance inside
+    /// the object (Beer–Lambert, docs/spec.md §10.2 item 7), linear, 0–1 per
+    /// channel like `color` (a scene file's 0–255 / 255: from_rgb8); white,
+    /// the default, absorbs nothing.
+    glm::vec3 absorption_color{1.0f, 1.0f, 1.0f};
+    /// D (> 0, finite): the distance, in scene units, after which white light
+    /// inside the object has turned into absorption_color.
+    float absorption_distance = 1.0f;
 };
 
 /// One parameter of the models of docs/spec.md §9.1 as scene files name and

@@ -35,7 +35,9 @@ struct Room {
     float height = 10.0f;
     /// Extent along z (> 0).
     float depth = 10.0f;
-    float ior = 1.0f;  ///< docs/spec.md §10: n_r
+    /// n_r, in [1, 3]: the refractive index of the medium that fills the room
+    /// (docs/spec.md §10.1; 1, the default, is air or vacuum).
+    float ior = 1.0f;
 };
 
 /// The narrowest field of view allowed, in degrees (docs/reliability.md):
@@ -176,6 +178,13 @@ struct SceneObject {
 
 class BuiltMeshes;
 
+/// The default of Scene::max_depth (docs/spec.md §10.1).
+inline constexpr int default_max_depth = 8;
+/// The smallest Scene::max_depth allowed: the first hit alone.
+inline constexpr int min_max_depth = 1;
+/// The largest Scene::max_depth allowed.
+inline constexpr int max_max_depth = 16;
+
 /// A whole scene, as loaded (load_scene, parse_scene) or built in code. A
 /// renderer draws it only after validate_scene finds no error.
 struct Scene {
@@ -194,7 +203,11 @@ struct Scene {
     std::optional<Normals> normals;
     /// The crease angle in degrees, (0, 180], for every object; not given: no crease.
     std::optional<float> crease_angle_degrees;
-    int max_depth = 8;  ///< docs/spec.md §10
+    /// docs/spec.md §10.2 item 9: the most surface interactions along one
+    /// ray path, the first hit included, min_max_depth–max_max_depth
+    /// (`[lighting] max_depth`, `--max-depth`). Matters only where some
+    /// object's transmission is above 0.
+    int max_depth = default_max_depth;
     /// The lights, in file order.
     std::vector<SceneLight> lights;
     /// The objects, in file order.

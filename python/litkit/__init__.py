@@ -123,18 +123,20 @@ def check(*scene):
         return list(load(*scene).warnings)
 
 
-def render(scene=None, *, reflection=None, shading=None, width=None, height=None, threads=0):
+def render(scene=None, *, reflection=None, shading=None, width=None, height=None,
+           max_depth=None, threads=0):
     """Renders ``scene`` (default: the built-in default scene) on the CPU and
     returns the picture as a litkit.Image, an (height, width, 3) uint8 NumPy
     array, equal to the PNG ``litkit render`` writes. ``reflection``,
-    ``shading``, ``width`` and ``height`` replace the scene's own; a scene
+    ``shading``, ``width``, ``height`` and ``max_depth`` (1-16, the ray paths'
+    length through glass, as ``--max-depth``) replace the scene's own; a scene
     without [lighting] uses phong / phong. ``threads``: 0 is one per hardware
     thread. The scene is checked first (it may have been changed in Python).
     Releases the GIL while it works."""
     if scene is None:
         scene = default_scene()
     pixels = _litkit._render(scene, reflection=reflection, shading=shading, width=width,
-                             height=height, threads=threads)
+                             height=height, max_depth=max_depth, threads=threads)
     return pixels.view(Image)
 
 
@@ -152,11 +154,12 @@ class Renderer:
         self._prepared = _litkit._Renderer(default_scene() if scene is None else scene,
                                            threads=threads)
 
-    def render(self, scene=None, *, reflection=None, shading=None, width=None, height=None):
+    def render(self, scene=None, *, reflection=None, shading=None, width=None, height=None,
+               max_depth=None):
         """Draws the scene given (checked, and kept for the next frames) or the
         last one; the keyword arguments apply to this picture only."""
         pixels = self._prepared.render(scene, reflection=reflection, shading=shading,
-                                       width=width, height=height)
+                                       width=width, height=height, max_depth=max_depth)
         return pixels.view(Image)
 
     @property

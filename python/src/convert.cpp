@@ -50,6 +50,14 @@ void Overrides::apply_to(litkit::Scene& scene) const {
     if (shading) scene.shading = shading_from(*shading);
     if (width) scene.output.width = checked_size("width", *width);
     if (height) scene.output.height = checked_size("height", *height);
+    if (max_depth) {
+        // The command line's --max-depth range (docs/spec.md §10.1).
+        if (*max_depth < litkit::min_max_depth || *max_depth > litkit::max_max_depth)
+            throw litkit::ArgumentError(
+                "max_depth must be " + std::to_string(litkit::min_max_depth) + "-" +
+                std::to_string(litkit::max_max_depth) + ", found " + std::to_string(*max_depth));
+        scene.max_depth = *max_depth;
+    }
 }
 
 int checked_threads(int threads) {

@@ -65,7 +65,9 @@ struct Overrides {
     std::optional<std::string> shading;
     std::optional<int> width;
     std::optional<int> height;
-    // Throws litkit::ArgumentError for an unknown name or a size out of range.
+    std::optional<int> max_depth;
+    // Throws litkit::ArgumentError for an unknown name, a size or a max_depth
+    // out of range.
     void apply_to(litkit::Scene& scene) const;
 };
 int checked_threads(int threads);

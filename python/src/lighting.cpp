@@ -87,7 +87,9 @@ void bind_material(py::module_& module) {
     py::class_<litkit::Material>(module, "Material",
                                  "Surface coefficients; color per channel in 0-1.")
         .def(py::init([](glm::vec3 color, float ka, float kd, float ks, float shininess,
-                         float sigma, float roughness, float f0, float bands, float minnaert_k) {
+                         float sigma, float roughness, float f0, float bands, float minnaert_k,
+                         float transmission, float ior, glm::vec3 absorption_color,
+                         float absorption_distance) {
                  return litkit::Material{.color = color,
                                          .ka = ka,
                                          .kd = kd,
@@ -97,13 +99,20 @@ void bind_material(py::module_& module) {
                                          .roughness = roughness,
                                          .f0 = f0,
                                          .bands = bands,
-                                         .minnaert_k = minnaert_k};
+                                         .minnaert_k = minnaert_k,
+                                         .transmission = transmission,
+                                         .ior = ior,
+                                         .absorption_color = absorption_color,
+                                         .absorption_distance = absorption_distance};
              }),
              py::kw_only(), py::arg("color") = defaults.color, py::arg("ka") = defaults.ka,
              py::arg("kd") = defaults.kd, py::arg("ks") = defaults.ks,
              py::arg("shininess") = defaults.shininess, py::arg("sigma") = defaults.sigma,
              py::arg("roughness") = defaults.roughness, py::arg("f0") = defaults.f0,
-             py::arg("bands") = defaults.bands, py::arg("minnaert_k") = defaults.minnaert_k)
+             py::arg("bands") = defaults.bands, py::arg("minnaert_k") = defaults.minnaert_k,
+             py::arg("transmission") = defaults.transmission, py::arg("ior") = defaults.ior,
+             py::arg("absorption_color") = defaults.absorption_color,
+             py::arg("absorption_distance") = defaults.absorption_distance)
         .def_readwrite("color", &litkit::Material::color)
         .def_readwrite("ka", &litkit::Material::ka)
         .def_readwrite("kd", &litkit::Material::kd)
@@ -113,7 +122,15 @@ void bind_material(py::module_& module) {
         .def_readwrite("roughness", &litkit::Material::roughness)
         .def_readwrite("f0", &litkit::Material::f0)
         .def_readwrite("bands", &litkit::Material::bands)
-        .def_readwrite("minnaert_k", &litkit::Material::minnaert_k);
+        .def_readwrite("minnaert_k", &litkit::Material::minnaert_k)
+        // docs/spec.md §10.1: refraction, without effect while transmission is 0.
+        .def_readwrite("transmission", &litkit::Material::transmission,
+                       "Share of ambient and diffuse light replaced by refraction, 0-1")
+        .def_readwrite("ior", &litkit::Material::ior, "Refractive index of the inside, 1-3")
+        .def_readwrite("absorption_color", &litkit::Material::absorption_color,
+                       "Colour white light turns into after absorption_distance inside, 0-1")
+        .def_readwrite("absorption_distance", &litkit::Material::absorption_distance,
+                       "Distance inside after which white light is absorption_color (> 0)");
 }
 
 void bind_light(py::module_& module) {

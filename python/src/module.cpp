@@ -94,8 +94,9 @@ class PreparedScene {
 };
 
 Overrides overrides(std::optional<std::string> reflection, std::optional<std::string> shading,
-                    std::optional<int> width, std::optional<int> height) {
-    return Overrides{std::move(reflection), std::move(shading), width, height};
+                    std::optional<int> width, std::optional<int> height,
+                    std::optional<int> max_depth) {
+    return Overrides{std::move(reflection), std::move(shading), width, height, max_depth};
 }
 
 }  // namespace
@@ -105,12 +106,13 @@ void bind_render(py::module_& module) {
         "_render",
         [](const litkit::Scene& scene, std::optional<std::string> reflection,
            std::optional<std::string> shading, std::optional<int> width, std::optional<int> height,
-           int threads) {
-            return render_once(scene, overrides(reflection, shading, width, height), threads);
+           std::optional<int> max_depth, int threads) {
+            return render_once(scene, overrides(reflection, shading, width, height, max_depth),
+                               threads);
         },
         py::arg("scene"), py::kw_only(), py::arg("reflection") = py::none(),
         py::arg("shading") = py::none(), py::arg("width") = py::none(),
-        py::arg("height") = py::none(), py::arg("threads") = 0);
+        py::arg("height") = py::none(), py::arg("max_depth") = py::none(), py::arg("threads") = 0);
 
     py::class_<PreparedScene>(module, "_Renderer")
         .def(py::init<const litkit::Scene&, int>(), py::arg("scene"), py::kw_only(),
@@ -119,12 +121,12 @@ void bind_render(py::module_& module) {
             "render",
             [](PreparedScene& self, std::optional<litkit::Scene> scene,
                std::optional<std::string> reflection, std::optional<std::string> shading,
-               std::optional<int> width, std::optional<int> height) {
-                return self.render(scene, overrides(reflection, shading, width, height));
+               std::optional<int> width, std::optional<int> height, std::optional<int> max_depth) {
+                return self.render(scene, overrides(reflection, shading, width, height, max_depth));
             },
             py::arg("scene") = py::none(), py::kw_only(), py::arg("reflection") = py::none(),
             py::arg("shading") = py::none(), py::arg("width") = py::none(),
-            py::arg("height") = py::none())
+            py::arg("height") = py::none(), py::arg("max_depth") = py::none())
         .def_property_readonly("scene", &PreparedScene::scene)
         .def_property_readonly("mesh_builds", &PreparedScene::mesh_builds)
         .def_property_readonly("triangle_count", &PreparedScene::triangle_count)

@@ -67,7 +67,9 @@ void bind_parts(py::module_& module) {
     py::class_<litkit::Room>(module, "Room", "The box around the scene, centred at the origin.")
         .def_readwrite("width", &litkit::Room::width)
         .def_readwrite("height", &litkit::Room::height)
-        .def_readwrite("depth", &litkit::Room::depth);
+        .def_readwrite("depth", &litkit::Room::depth)
+        .def_readwrite("ior", &litkit::Room::ior,
+                       "Refractive index of the medium filling the room, 1-3");
     py::class_<litkit::Observer>(module, "Observer", "The perspective camera.")
         .def_readwrite("position", &litkit::Observer::position)
         .def_readwrite("look_at", &litkit::Observer::look_at)
@@ -120,6 +122,8 @@ void bind_scene(py::module_& module) {
             },
             normals_doc())
         .def_readwrite("crease_angle", &litkit::Scene::crease_angle_degrees)
+        .def_readwrite("max_depth", &litkit::Scene::max_depth,
+                       "Surface interactions along one ray path through glass, 1-16")
         .def_property_readonly("light_count",
                                [](const litkit::Scene& s) { return s.lights.size(); })
         .def_property_readonly("object_count",

@@ -28,6 +28,7 @@
 #include "litkit/glsl.hpp"
 #include "litkit/validate.hpp"
 #include "scene/float_range.hpp"
+#include "scene/transparency.hpp"
 
 namespace litkit {
 
@@ -154,6 +155,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
 
 void GlRenderer::update(const Scene& input) {
     check_renderable(input);  // litkit/validate.hpp: the renderers' preconditions
+    detail::refuse_refraction(input, "the OpenGL backend");
     // Drawn as the CPU renderer draws it: lengths brought into a float's
     // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));
@@ -203,6 +205,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
 GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
     check_renderable(input);  // before any OpenGL is set up
+    detail::refuse_refraction(input, "the OpenGL backend");
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));  // as in update
     Impl& gl = *impl_;
     if (headless) {

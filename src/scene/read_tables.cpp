@@ -26,11 +26,11 @@ std::string written_text(double value) {
 // The names of the closed sets in scene files.
 constexpr std::array<std::string_view, 6> top_level_keys{"room",   "observer", "lighting",
                                                          "output", "lights",   "objects"};
-constexpr std::array<std::string_view, 3> room_keys{"width", "height", "depth"};
+constexpr std::array<std::string_view, 4> room_keys{"width", "height", "depth", "ior"};
 constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "up",
                                                         "fov",      "near",    "far"};
-constexpr std::array<std::string_view, 4> lighting_keys{"reflection", "shading", "normals",
-                                                        "crease_angle"};
+constexpr std::array<std::string_view, 5> lighting_keys{"reflection", "shading", "normals",
+                                                        "crease_angle", "max_depth"};
 constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
 // The material keys of docs/spec.md §5 and the parameters of §9.1: every
 // object takes them all, whatever its reflection model, so that models can be
@@ -41,6 +41,8 @@ std::span<const std::string_view> material_keys() {
         for_each_model_parameter(
             [&](const ModelParameter& parameter, const float&) { all.push_back(parameter.key); },
             Material{});
+        // docs/spec.md §10.1, refraction's: accepted on every object too.
+        all.insert(all.end(), {"transmission", "ior", "absorption_color", "absorption_distance"});
         return all;
     }();
     return keys;
@@ -163,10 +165,11 @@ void SceneReader::check_required_tables(std::span<const ParsedFile> files) {
 
 void SceneReader::read_room(const Site& site) {
     check_keys(site, room_keys);
-    for (std::string_view key : room_keys) require(site, key);
+    for (std::string_view key : {"width", "height", "depth"}) require(site, key);
     if (auto width = read_number(site, "width")) scene_.room.width = *width;
     if (auto height = read_number(site, "height")) scene_.room.height = *height;
     if (auto depth = read_number(site, "depth")) scene_.room.depth = *depth;
+    if (auto ior = read_number(site, "ior")) scene_.room.ior = *ior;
 }
 
 void SceneReader::read_observer(const Site& site) {
@@ -218,6 +221,7 @@ void SceneReader::read_lighting(const Site& site) {
     scene_.normals = read_enum<Normals>(site, "normals", normals_names, "way of computing normals",
                                         parse_normals);
     scene_.crease_angle_degrees = read_number(site, "crease_angle");
+    if (auto max_depth = read_integer(site, "max_depth")) scene_.max_depth = *max_depth;
 }
 
 void SceneReader::read_output(const Site& site) {
@@ -386,6 +390,13 @@ void SceneReader::read_material(const Site& object_site, Material& material) {
     if (auto kd = read_number(site, "kd")) material.kd = *kd;
     if (auto ks = read_number(site, "ks")) material.ks = *ks;
     if (auto shininess = read_number(site, "shininess")) material.shininess = *shininess;
+    if (auto transmission = read_number(site, "transmission"))
+        material.transmission = *transmission;
+    if (auto ior = read_number(site, "ior")) material.ior = *ior;
+    if (auto absorption = read_color(site, "absorption_color"))
+        material.absorption_color = unit_color(*absorption);
+    if (auto distance = read_number(site, "absorption_distance"))
+        material.absorption_distance = *distance;
     for_each_model_parameter(
         [&](const ModelParameter& parameter, float& value) {
             if (parameter.whole) {

@@ -22,6 +22,7 @@
 #include "geometry/convex.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/float_range.hpp"
+#include "scene/transparency.hpp"
 #include "scene/validate_internal.hpp"
 #include "scene/world_mesh.hpp"
 
@@ -269,6 +270,8 @@ class Validator {
         finite(room.height, "room.height", "room", "height");
         finite(room.depth, "room.depth", "room", "depth");
         room_ok_ = usable("room") && diagnostics_.size() == before;
+        // docs/spec.md §10.1; not a size, so a bad one leaves the room usable.
+        in_range(room.ior, 1.0f, 3.0f, "room.ior", "room", "ior");
     }
 
     // False for an entity that failed the loader's shape checks (it holds
@@ -303,6 +306,8 @@ class Validator {
 
     void check_lighting() {
         crease_angle(scene_.crease_angle_degrees, "lighting.crease_angle", "lighting");
+        integer_in(scene_.max_depth, min_max_depth, max_max_depth, "lighting.max_depth", "lighting",
+                   "max_depth");
     }
 
     void check_observer() {
@@ -437,6 +442,7 @@ class Validator {
                 }
             },
             m);
+        check_refraction_values(object, base, who);
         crease_angle(object.crease_angle_degrees, base + ".crease_angle", who);
         if (object.normals == Normals::File && !std::holds_alternative<MeshFileShape>(object.shape))
             error(base + ".normals", who,
@@ -487,6 +493,34 @@ class Validator {
         shape_ok_.push_back(usable(base) && geometry_ok && diagnostics_.size() == before);
     }
 
+    // docs/spec.md §10.1: the material's refraction keys, checked whatever
+    // the transmission (as the §9.1 parameters are whatever the model); and
+    // the closed-mesh rule for the teapot, which no parameter closes (a mesh
+    // is checked when it is built, in build_hulls).
+    void check_refraction_values(const SceneObject& object, const std::string& base,
+                                 const std::string& who) {
+        const Material& m = object.material;
+        in_range(m.transmission, 0.0f, 1.0f, base + ".material.transmission", who,
+                 "material.transmission");
+        in_range(m.ior, 1.0f, 3.0f, base + ".material.ior", who, "material.ior");
+        const glm::vec3& a = m.absorption_color;
+        if (!(a.x >= 0.0f && a.x <= 1.0f && a.y >= 0.0f && a.y <= 1.0f && a.z >= 0.0f &&
+              a.z <= 1.0f))
+            error(base + ".material.absorption_color", who,
+                  "material.absorption_color must be 0–1 per channel (litkit::from_rgb8 "
+                  "converts 0–255), found " +
+                      vector_text(a));
+        if (finite(m.absorption_distance, base + ".material.absorption_distance", who,
+                   "material.absorption_distance"))
+            at_least(m.absorption_distance, 0.0f, false, base + ".material.absorption_distance",
+                     who, "material.absorption_distance");
+        if (m.transmission > 0.0f && std::holds_alternative<TeapotShape>(object.shape))
+            error(base, who,
+                  "transmission " + number_text(m.transmission) +
+                      " needs a closed mesh (docs/spec.md §10.1), and the teapot is not closed; "
+                      "use a cube, sphere, torus or closed mesh, or transmission 0");
+    }
+
     void check_names() {
         std::map<std::string, std::string> first_use;  // name → who used it first
         auto claim = [&](const std::string& name, const std::string& path, const std::string& who) {
@@ -528,6 +562,16 @@ class Validator {
                 throw IoError(failure.path(), failure.reason(), scene_place);
             }
             check_orientation(i, mesh);
+            // docs/spec.md §10.1: a mesh that refracts must be closed (the
+            // built-in cube, sphere and torus are by construction).
+            if (object.material.transmission > 0.0f &&
+                (std::holds_alternative<MeshFileShape>(object.shape) ||
+                 std::holds_alternative<MeshDataShape>(object.shape))) {
+                const std::string problem = detail::closed_mesh_problem(object, mesh);
+                if (!problem.empty())
+                    error("objects[" + std::to_string(i) + "]", subject("objects", i, object.name),
+                          problem);
+            }
             // docs/spec.md §9.2: "file" normals need one at every face corner.
             const auto* file = std::get_if<MeshFileShape>(&object.shape);
             if (file && normal_options(scene_, object).normals == Normals::File) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace litkit::detail {
@@ -29,9 +30,26 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return previous[b.size()];
 }
 
+namespace {
+
+// Other names users give a key (from other renderers and the literature),
+// which no spelling distance connects with litkit's.
+constexpr std::pair<std::string_view, std::string_view> synonyms[] = {
+    {"refraction_index", "ior"},    {"refractive_index", "ior"},
+    {"index_of_refraction", "ior"}, {"transparency", "transmission"},
+    {"max_bounces", "max_depth"},   {"max_recursion_depth", "max_depth"},
+};
+
+}  // namespace
+
 std::optional<std::string_view> closest_word(std::string_view word,
                                              std::span<const std::string_view> candidates) {
     const std::string folded = lower_case(word);
+    for (const auto& [synonym, meant] : synonyms) {
+        if (folded != synonym) continue;
+        for (std::string_view candidate : candidates)
+            if (candidate == meant) return candidate;
+    }
     std::optional<std::string_view> best;
     std::size_t best_distance = std::numeric_limits<std::size_t>::max();
     for (std::string_view candidate : candidates) {

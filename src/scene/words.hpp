@@ -15,8 +15,9 @@ std::string lower_case(std::string_view text);
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // The candidate the user most likely meant by `word`, if any is close: the
-// same word in another case ("Phong"), a small typo ("positon",
-// "half_lambert"), or the unique candidate `word` begins ("blinn").
+// same word in another case ("Phong"), a known synonym ("refraction_index"
+// for "ior"), a small typo ("positon", "half_lambert"), or the unique
+// candidate `word` begins ("blinn").
 std::optional<std::string_view> closest_word(std::string_view word,
                                              std::span<const std::string_view> candidates);
 

@@ -142,6 +142,9 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
                     (parameter.whole ? std::to_string(std::lround(value)) : number(value));
         },
         m);
+    text += ", transmission = " + number(m.transmission) + ", ior = " + number(m.ior) +
+            ", absorption_color = " + color(m.absorption_color) +
+            ", absorption_distance = " + number(m.absorption_distance);
     return text + " }\n";
 }
 
@@ -152,20 +155,20 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
         written_as.empty() ? std::filesystem::path() : written_as.parent_path();
     std::string text = "# litkit scene\n\n[room]\nwidth = " + number(scene.room.width) +
                        "\nheight = " + number(scene.room.height) +
-                       "\ndepth = " + number(scene.room.depth) + "\n";
+                       "\ndepth = " + number(scene.room.depth) +
+                       "\nior = " + number(scene.room.ior) + "\n";
     const Observer& o = scene.observer;
     text += "\n[observer]\nposition = " + vec3(o.position) + "\nlook_at = " + vec3(o.look_at) +
             "\nup = " + vec3(o.up) + "\nfov = " + number(o.fov_degrees) +
             "\nnear = " + number(o.near) + "\nfar = " + number(o.far) + "\n";
-    if (scene.reflection || scene.shading || scene.normals || scene.crease_angle_degrees) {
-        text += "\n[lighting]\n";
-        if (scene.reflection)
-            text += "reflection = \"" + std::string(to_string(*scene.reflection)) + "\"\n";
-        if (scene.shading) text += "shading = \"" + std::string(to_string(*scene.shading)) + "\"\n";
-        if (scene.normals) text += "normals = \"" + std::string(to_string(*scene.normals)) + "\"\n";
-        if (scene.crease_angle_degrees)
-            text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
-    }
+    text += "\n[lighting]\n";
+    if (scene.reflection)
+        text += "reflection = \"" + std::string(to_string(*scene.reflection)) + "\"\n";
+    if (scene.shading) text += "shading = \"" + std::string(to_string(*scene.shading)) + "\"\n";
+    if (scene.normals) text += "normals = \"" + std::string(to_string(*scene.normals)) + "\"\n";
+    if (scene.crease_angle_degrees)
+        text += "crease_angle = " + number(*scene.crease_angle_degrees) + "\n";
+    text += "max_depth = " + std::to_string(scene.max_depth) + "\n";
     text += "\n[output]\nwidth = " + std::to_string(scene.output.width) +
             "\nheight = " + std::to_string(scene.output.height) +
             "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +

@@ -148,6 +148,8 @@ def test_a_scene_broken_in_python_is_refused_with_checks_message(tmp_path):
     {"height": 0},
     {"width": -5},
     {"height": 16385},
+    {"max_depth": 0},
+    {"max_depth": 17},
     {"threads": -1},
     {"threads": 5000},
 ])
