@@ -345,6 +345,27 @@ TEST(GlassReference, GoochAndToonGlass) {
     expect_matches_reference(scene, "gooch_toon");
 }
 
+// Flat and gouraud glass: the local part by the shading model (flat: at the
+// centroid; gouraud: the corners' values mixed), the bracket per pixel with
+// N_s (the face normal; the interpolated one). With gamma 2.2, so that rays
+// that leave the scene bring (background/255)^2.2 back to be corrected again.
+TEST(GlassReference, FlatAndGouraudGlassWithGamma) {
+    Scene scene = base_scene();
+    scene.output.gamma = 2.2f;
+    add_cubes(scene, -3.0f);
+    SceneObject flat = glass(litkit::SphereShape{1.1f, 24, 12}, {-1.3f, 0.0f, 1.0f});
+    flat.shading = litkit::Shading::Flat;
+    flat.material.transmission = 0.5f;
+    flat.material.color = {0.3f, 0.9f, 0.6f};
+    scene.objects.push_back(flat);
+    SceneObject gouraud = glass(litkit::SphereShape{1.1f, 24, 12}, {1.4f, 0.1f, 1.0f}, 1.6f);
+    gouraud.shading = litkit::Shading::Gouraud;
+    gouraud.material.transmission = 0.5f;
+    gouraud.material.color = {0.9f, 0.7f, 0.3f};
+    scene.objects.push_back(gouraud);
+    expect_matches_reference(scene, "flat_gouraud_gamma");
+}
+
 // ---- Closed forms ----
 
 int largest_difference(const litkit::Image& a, const litkit::Image& b, std::string& where) {
