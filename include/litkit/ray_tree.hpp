@@ -29,12 +29,12 @@ struct RayNode {
         Lost,        ///< inside an object, found no exit: L = 0
         Untraced     ///< deeper than max_depth or weighted below 2⁻¹⁰: L = 0
     };
-    Kind kind = Kind::Camera;
-    Outcome outcome = Outcome::Untraced;
-    int depth = 1;        ///< the first hit is 1, the rays it spawns 2, ...
-    int parent = -1;      ///< index of the node that spawned this ray; −1 for the camera's
-    bool inside = false;  ///< travels inside an object (hits its back faces only)
-    glm::vec3 origin{0.0f};
+    Kind kind = Kind::Camera;             ///< how the ray came about
+    Outcome outcome = Outcome::Untraced;  ///< what it did
+    int depth = 1;                        ///< the first hit is 1, the rays it spawns 2, ...
+    int parent = -1;            ///< index of the node that spawned this ray; −1 for the camera's
+    bool inside = false;        ///< travels inside an object (hits its back faces only)
+    glm::vec3 origin{0.0f};     ///< where the ray starts (the eye for the camera's)
     glm::vec3 direction{0.0f};  ///< unit
     // What it hit (Surface, Interface).
     std::size_t object = 0;    ///< index into Scene::objects
@@ -44,14 +44,15 @@ struct RayNode {
     /// A(ℓ) = (a/255)^(ℓ/D) of a ray inside an object; 1 elsewhere.
     glm::vec3 absorption{1.0f};
     // The interface (Interface only): items 1–6.
-    float n1 = 1.0f, n2 = 1.0f;  ///< the indices on the ray's side and beyond
-    float theta1 = 0.0f;         ///< angle of incidence θ₁, degrees
-    float theta2 = 0.0f;         ///< angle of refraction θ₂, degrees (0 under TIR)
-    float k = 0.0f;              ///< 1 − η²(1 − c₁²)
-    float fresnel = 0.0f;        ///< F (1 under total internal reflection)
-    bool total_internal_reflection = false;
-    bool geometric_normal = false;  ///< items 2 or 6 fell back from N_s to N_g
-    float transmission = 0.0f;      ///< t of the object entered from the room (else 0)
+    float n1 = 1.0f;                         ///< the refractive index on the ray's side
+    float n2 = 1.0f;                         ///< the refractive index beyond the surface
+    float theta1 = 0.0f;                     ///< angle of incidence θ₁, degrees
+    float theta2 = 0.0f;                     ///< angle of refraction θ₂, degrees (0 under TIR)
+    float k = 0.0f;                          ///< 1 − η²(1 − c₁²)
+    float fresnel = 0.0f;                    ///< F (1 under total internal reflection)
+    bool total_internal_reflection = false;  ///< k ≤ 0: no refracted ray
+    bool geometric_normal = false;           ///< items 2 or 6 fell back from N_s to N_g
+    float transmission = 0.0f;               ///< t of the object entered from the room (else 0)
     /// The product of the factors in front of this ray's L (t, F, 1 − F and
     /// the A of the segments before it): the path weight is its largest channel.
     glm::vec3 weight{1.0f};
