@@ -270,7 +270,7 @@ glm::vec3 RayTree::first_hit(const FirstHit& hit, std::uint64_t& rays,
     const Path reflected{hit.point, glm::normalize(to_glm(b.at.reflected)),
                          2,         glm::vec3(share * fresnel),
                          no_object, RayNode::Kind::Reflected,
-                         record};
+                         record,    &rays};
     glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
     if (!b.at.total_internal_reflection) {
         const Path refracted{hit.point,  glm::normalize(to_glm(b.at.refracted)),
