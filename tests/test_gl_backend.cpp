@@ -276,9 +276,9 @@ TEST(GlBackend, MatchesCpuOnEveryExample) {
         litkit::Scene scene = litkit::load_scene(files);
         if (!scene.reflection) scene.reflection = litkit::default_reflection;
         if (!scene.shading) scene.shading = litkit::default_shading;
-        const bool glass =
-            std::any_of(scene.objects.begin(), scene.objects.end(),
-                        [](const litkit::SceneObject& o) { return o.material.transmission > 0.0f; });
+        const bool glass = std::any_of(
+            scene.objects.begin(), scene.objects.end(),
+            [](const litkit::SceneObject& o) { return o.material.transmission > 0.0f; });
         if (glass) {
             // The glass examples: the OpenGL backend does not trace rays yet
             // and refuses them rather than draw something else (docs/spec.md §10).
