@@ -28,8 +28,8 @@ set(LITKIT_LAYER_SOURCES_codegen
     codegen/export.cpp codegen/gl_scene.cpp codegen/glsl.cpp codegen/glsl_expr.cpp
     codegen/glsl_functions.cpp)
 set(LITKIT_LAYER_SOURCES_teach
-    teach/compare.cpp teach/explain.cpp teach/explain_format.cpp teach/labels.cpp
-    teach/turntable.cpp)
+    teach/compare.cpp teach/explain.cpp teach/explain_format.cpp teach/explain_tree.cpp
+    teach/labels.cpp teach/turntable.cpp)
 set(LITKIT_LAYER_SOURCES_gl
     gl/gl_renderer.cpp)
 

@@ -381,8 +381,9 @@ TEST_F(Viewer, SSavesThePictureBesideTheScene) {
 
 TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     // The panel's layout for a scene of one object and one light: the gamma
-    // slider's row, then the object's and the light's, the frame time, the
-    // file name and the Save button (Dear ImGui's default style).
+    // and max_depth sliders' rows, then the object's and the light's, the
+    // frame time, the file name and the Save button (Dear ImGui's default
+    // style).
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --width 480 --height 360"));
     std::this_thread::sleep_for(500ms);
     const litkit::Image before = screenshot();
@@ -397,9 +398,9 @@ TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     EXPECT_GT(largest_difference(before, after), 8);
 
     // Type a file name and press Save as...
-    xdo("mousemove --window " + window + " 100 168 sleep 0.1 click 1 sleep 0.1");
+    xdo("mousemove --window " + window + " 100 191 sleep 0.1 click 1 sleep 0.1");
     xdo("type --delay 30 saved.toml");
-    xdo("sleep 0.1 mousemove --window " + window + " 40 191 sleep 0.1 click 1");
+    xdo("sleep 0.1 mousemove --window " + window + " 40 214 sleep 0.1 click 1");
     const auto deadline = std::chrono::steady_clock::now() + 3s;
     while (!fs::exists(dir / "saved.toml") && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(40ms);
@@ -411,6 +412,90 @@ TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     const litkit::Image shown = screenshot();
     const litkit::Image saved = rendered("", "saved.toml");
     EXPECT_LE(largest_difference(shown, saved), 1);
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
+TEST_F(Viewer, GlassSlidersChangeThePicture) {
+    // A small ball right of the panel (few glass pixels and triangles: the
+    // rays are traced quickly).
+    std::string scene = small_scene;
+    const std::string ball = "radius = 1\nsegments = 24\nrings = 12";
+    scene.replace(scene.find(ball), ball.size(),
+                  "radius = 0.6\nsegments = 16\nrings = 8\nposition = [1.6, 0, 0]");
+    write_scene(scene);
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --width 640 --height 360"));
+    std::this_thread::sleep_for(500ms);
+    const litkit::Image opaque = screenshot();
+    ASSERT_EQ(opaque.width, 640);
+    // The ball's most orange pixel (red above blue) right of the panel.
+    auto orange = [](const litkit::Image& image, int x, int y) {
+        return int(image.pixel(x, y)[0]) - int(image.pixel(x, y)[2]);
+    };
+    int bx = 0, by = 0;
+    for (int y = 0; y < 360; ++y)
+        for (int x = 420; x < 640; ++x)
+            if (orange(opaque, x, y) > orange(opaque, bx, by)) bx = x, by = y;
+    ASSERT_GT(orange(opaque, bx, by), 60) << "no ball beside the panel";
+    // The ball's own rows open below its name (the row after max_depth):
+    // color, ka, kd, ks, shininess, then transmission. A click at the right
+    // end of transmission's slider: t = 1 (clamped), the ball turns to glass.
+    xdo("mousemove --window " + window + " 40 133 sleep 0.1 click 1 sleep 0.2");
+    xdo("mousemove --window " + window + " 243 268 sleep 0.2 click 1");
+    // Through clear glass the background (20, 30, 40) shows, and white
+    // highlights: no longer orange.
+    const auto deadline = std::chrono::steady_clock::now() + 10s;
+    litkit::Image glass = screenshot();
+    while (glass.width == 640 && orange(glass, bx, by) > 20 &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(100ms);
+        glass = screenshot();
+    }
+    ASSERT_EQ(glass.width, 640);
+    const std::uint8_t* before = opaque.pixel(bx, by);
+    const std::uint8_t* after = glass.pixel(bx, by);
+    EXPECT_LE(orange(glass, bx, by), 20)
+        << "before " << int(before[0]) << " " << int(before[1]) << " " << int(before[2])
+        << ", after " << int(after[0]) << " " << int(after[1]) << " " << int(after[2]);
+    EXPECT_TRUE(alive()) << text_of("stderr.txt");
+    // Dear ImGui lets the slider go only on a later frame: a click beside
+    // the panel (no drag: the camera stays) gives it that, and then the
+    // mouse and keys are the viewer's again.
+    xdo("mousemove --window " + window +
+        " 600 330 sleep 0.3 click 1 sleep 0.3 mousemove --window " + window + " 590 300 sleep 0.3");
+    // While the view is dragged, glass is traced to max_depth 2 only: the
+    // rays inside the ball end at its far side, which turns black. Once the
+    // button is released the picture at rest is exact again. (Right of the
+    // panel; the drag goes 30 pixels right and back, the camera with it.)
+    auto beside_panel = [](const litkit::Image& a, const litkit::Image& b) {
+        int worst = 0;
+        for (int y = 0; y < 360; ++y)
+            for (int x = 420; x < 640; ++x)
+                for (int c = 0; c < 3; ++c)
+                    worst =
+                        std::max(worst, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+        return worst;
+    };
+    const litkit::Image rest = screenshot();
+    ASSERT_EQ(rest.width, 640);
+    xdo("mousemove --window " + window +
+        " 590 300 sleep 0.1 mousedown 1 sleep 0.2 mousemove --window " + window +
+        " 620 300 sleep 0.3 mousemove --window " + window + " 590 300 sleep 0.3");
+    auto until = [&](auto done) {
+        litkit::Image now = screenshot();
+        for (int i = 0; i < 50 && !(now.width == 640 && done(now)); ++i) {
+            std::this_thread::sleep_for(100ms);
+            now = screenshot();
+        }
+        return now;
+    };
+    const litkit::Image moving =
+        until([&](const litkit::Image& now) { return beside_panel(rest, now) > 8; });
+    EXPECT_GT(beside_panel(rest, moving), 8) << "the drag drew glass at full depth";
+    xdo("mouseup 1");
+    const litkit::Image after_drag =
+        until([&](const litkit::Image& now) { return beside_panel(rest, now) <= 1; });
+    EXPECT_LE(beside_panel(rest, after_drag), 1) << "the picture at rest is not the exact one";
     key("q");
     EXPECT_EQ(wait_exit(), 0);
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "litkit/lighting.hpp"
+#include "litkit/ray_tree.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
 
@@ -56,6 +57,12 @@ struct PixelExplanation {
     /// corner, whose colours the weights mix; phong: one, at the pixel.
     std::vector<PointEvaluation> evaluations;
     glm::vec3 sum{0.0f};  ///< I before clamping, exactly as the renderer had it
+    /// Where the object seen is glass (t > 0, docs/spec.md §10): the pixel's
+    /// ray tree, one node per ray, the camera's ray first, each after its
+    /// parent (RayNode::parent); the nodes' contributions add up to `sum`,
+    /// the pixel's L. Empty for an opaque object; `evaluations` then hold
+    /// all of `sum`, and here the local lighting at the first hit (its I).
+    std::vector<RayNode> ray_tree;
 };
 
 /// Renders the scene (CPU backend) and explains pixel (x, y). Objects' and

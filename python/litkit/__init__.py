@@ -49,9 +49,10 @@ from ._litkit import (  # noqa: F401  (the public API)
 )
 
 __all__ = [
-    "ArgumentError", "Diagnostic", "Error", "Image", "IoError", "Light", "Material",
+    "ArgumentError", "Diagnostic", "Error", "Explanation", "Image", "IoError", "Light", "Material",
     "Observer", "Output", "Renderer", "Room", "Scene", "SceneError", "SceneWarning", "check",
-    "default_scene", "default_scene_toml", "dumps", "encode_png", "light_types", "load", "loads",
+    "default_scene", "default_scene_toml", "dumps", "encode_png", "explain", "light_types", "load",
+    "loads",
     "normals_weightings", "reflection_models", "render", "shade", "shade_terms", "shading_models",
 ]
 
@@ -180,6 +181,44 @@ class Renderer:
     @property
     def thread_count(self):
         return self._prepared.thread_count
+
+
+class Explanation:
+    """How one pixel of ``render`` got its value (``litkit explain --pixel X,Y``).
+
+    ``x``, ``y``; ``hit``; ``rgb`` (the pixel); ``object`` (name, or
+    ``objects[i]``), ``object_index`` and ``triangle`` of what it shows and
+    ``sum``, its L before clamping (None where it shows the background);
+    ``text``, what the command prints (also ``str()``); ``ray_tree``: where
+    the pixel sees glass, one dict per ray, the camera's first, each after its
+    parent, with the keys of ``litkit explain --json``'s "ray_tree" entries
+    (``kind``, ``outcome``, ``depth``, ``parent``, ``inside``, ``object``,
+    ``object_index``, ``triangle``, ``length``, ``absorption``, ``n1``,
+    ``n2``, ``theta1``, ``theta2``, ``k``, ``fresnel``,
+    ``total_internal_reflection``, ``weight``, ``local``, ``contribution``,
+    ``radiance``, ...; docs/learning.md); the contributions add up to ``sum``.
+    Empty for an opaque object.
+    """
+
+    def __init__(self, fields):
+        self.__dict__.update(fields)
+
+    def __str__(self):
+        return self.text
+
+    def __repr__(self):
+        return (f"<litkit.Explanation of pixel ({self.x}, {self.y}): rgb {self.rgb}, "
+                f"{len(self.ray_tree)} rays>")
+
+
+def explain(scene=None, x=0, y=0, *, reflection=None, shading=None, threads=0):
+    """Explains pixel (``x``, ``y``) of ``render(scene, reflection=...,
+    shading=...)`` (default scene: the built-in one) and returns an
+    Explanation. Raises ArgumentError for a pixel outside the image."""
+    if scene is None:
+        scene = default_scene()
+    return Explanation(_litkit._explain(scene, x, y, reflection=reflection, shading=shading,
+                                        threads=threads))
 
 
 def _scene_to_dict(self):

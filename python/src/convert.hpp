@@ -84,5 +84,6 @@ void bind_errors(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_lighting(py::module_& module);
 void bind_render(py::module_& module);
+void bind_explain(py::module_& module);
 
 }  // namespace litkit_python

@@ -157,4 +157,5 @@ PYBIND11_MODULE(_litkit, module) {
     litkit_python::bind_scene(module);
     litkit_python::bind_lighting(module);
     litkit_python::bind_render(module);
+    litkit_python::bind_explain(module);
 }

@@ -90,6 +90,7 @@ PixelExplanation PixelExplainer::explain(int x, int y) {
     explanation.clipped = probe.clipped;
     explanation.weights = probe.weights;
     explanation.sum = probe.intensity;
+    explanation.ray_tree = probe.ray_tree;
 
     const WorldMesh& mesh = impl_->mesh(probe.object);
     for (int k = 0; k < 3; ++k) {

@@ -9,28 +9,16 @@
 #include "litkit/explain.hpp"
 
 #include "core/json.hpp"
+#include "teach/explain_text.hpp"
 
 namespace litkit {
 
 namespace {
 
-// Shortest text that reads back as the same float.
-std::string num(float value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    char buffer[32];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return error == std::errc() ? std::string(buffer, end) : "?";
-}
-
-std::string vec(const glm::vec3& v) {
-    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
-}
-
-// A vector as a JSON array (core/json.hpp: a non-finite component is null).
-std::string json_vec(const glm::vec3& v) {
-    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
-}
+using detail::json_vec;
+using detail::num;
+using detail::object_label;
+using detail::vec;
 
 std::string light_type(const Light& light) { return std::string(light_kind_name(light.kind)); }
 
@@ -39,13 +27,6 @@ std::string light_label(const Scene& scene, std::size_t index) {
     return "lights[" + std::to_string(index) + "]" +
            (light.name.empty() ? "" : " '" + light.name + "'") + " (" + light_type(light.light) +
            ")";
-}
-
-std::string object_label(const Scene& scene, std::size_t index) {
-    const SceneObject& object = scene.objects[index];
-    return "objects[" + std::to_string(index) + "]" +
-           (object.name.empty() ? "" : " '" + object.name + "'") + " (" +
-           std::string(shape_type_name(object.shape)) + ")";
 }
 
 // The lines of one evaluation of docs/spec.md §4 at a point.
@@ -175,7 +156,15 @@ std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
             break;
     }
     const glm::vec3 c = clamped(e.sum);
-    text += "\nI = " + vec(e.sum) + " (as the renderer computed it)\n";
+    if (!e.ray_tree.empty()) {
+        text +=
+            "  glass (t > 0): of I above, the specular part I_s stays and t of the rest I_ad\n"
+            "  gives way to what the rays below bring, t [F L(R) + (1 - F) L(T)]\n\n";
+        text += detail::ray_tree_text(e, scene);
+        text += "L = " + vec(e.sum) + " (as the renderer computed it)\n";
+    } else {
+        text += "\nI = " + vec(e.sum) + " (as the renderer computed it)\n";
+    }
     text += "clamp to [0, 1]: " + vec(c) + "\n";
     if (e.gamma != 1.0f)
         text += "gamma " + num(e.gamma) + ": each channel ^ (1/" + num(e.gamma) + ")\n";
@@ -221,6 +210,7 @@ std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
                    ", \"normal\": " + json_vec(v.normal) + ", \"lights\": " + json_lights(v, scene);
         }
         out += ", \"sum\": " + json_vec(e.sum) + ", \"gamma\": " + json::number(e.gamma);
+        if (!e.ray_tree.empty()) out += ", \"ray_tree\": " + detail::ray_tree_json(e, scene);
     }
     out += ", \"rgb\": [" + std::to_string(e.rgb[0]) + ", " + std::to_string(e.rgb[1]) + ", " +
            std::to_string(e.rgb[2]) + "]}";

@@ -27,6 +27,7 @@
 #include "litkit/image.hpp"
 #include "litkit/limits.hpp"
 #include "viewer/drawer.hpp"
+#include "viewer/panel.hpp"
 #include "viewer/watch.hpp"
 
 namespace litkit_cli {
@@ -81,11 +82,6 @@ struct Camera {
         observer.look_at += move;
     }
 };
-
-bool inside_room(const litkit::Room& room, const glm::vec3& p) {
-    return std::abs(p.x) <= room.width / 2 && std::abs(p.y) <= room.height / 2 &&
-           std::abs(p.z) <= room.depth / 2;
-}
 
 // "scene-1.png", "scene-2.png", …: the first name not taken.
 fs::path next_screenshot_name(const std::string& stem) {
@@ -177,9 +173,24 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         bool confirm_overwrite = false;
         std::string save_message;
 
+        int drag_button = 0;
+        bool dragged = false;  // the camera moved since the button went down
+        // While the view moves (a drag, the turntable, --benchmark) glass is
+        // traced to at most moving_depth interactions, so that orbiting stays
+        // fluid; at rest, to the scene's max_depth: the picture is exact.
+        constexpr int moving_depth = 2;
+        auto depth_now = [&] {
+            const bool glass = std::any_of(
+                scene.objects.begin(), scene.objects.end(),
+                [](const litkit::SceneObject& o) { return o.material.transmission > 0.0f; });
+            const bool moving = dragged || turntable || options.benchmark_frames > 0;
+            return glass && moving ? std::min(scene.max_depth, moving_depth) : scene.max_depth;
+        };
+        int drawn_depth = 0;  // max_depth of the picture shown
         // The scene the picture shows: the file's, the keys' models, the camera.
         auto shown_scene = [&] {
             litkit::Scene shown = scene;
+            shown.max_depth = depth_now();
             shown.observer = camera.observer;
             if (key_reflection) shown.reflection = key_reflection;
             if (key_shading) shown.shading = key_shading;
@@ -207,7 +218,6 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
         // window appears on its second): draw this many more after a change.
         int panel_frames = 0;
         bool running = true;
-        int drag_button = 0;
         auto last_turn = clock_type::now();
         int benchmark_done = -1;  // frames shown while measuring (-1: the first is not timed)
         clock_type::time_point benchmark_start;
@@ -276,6 +286,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                         break;
                     case SDL_MOUSEBUTTONUP:
                         drag_button = 0;
+                        dragged = false;
                         break;
                     case SDL_MOUSEMOTION: {
                         if (!drag_button) break;
@@ -298,6 +309,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                         if (!inside_room(scene.room, camera.observer.position))
                             camera.observer = before;
                         dirty = true;
+                        dragged = true;
                         break;
                     }
                     case SDL_MOUSEWHEEL: {
@@ -375,9 +387,11 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 redraw = true;
             }
 
+            if (drawer && depth_now() != drawn_depth) dirty = true;  // the view stopped
             if (dirty) {
                 const auto start = clock_type::now();
                 const litkit::Scene shown = shown_scene();
+                drawn_depth = shown.max_depth;
                 try {
                     if (!drawer)
                         drawer = std::make_unique<Drawer>(options.backend, shown, options.threads);
@@ -443,35 +457,15 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     }
                 }
                 edited |= ImGui::SliderFloat("gamma", &scene.output.gamma, 0.2f, 4.0f);
+                edited |= ImGui::SliderInt("max_depth", &scene.max_depth, 1, 16, "%d",
+                                           ImGuiSliderFlags_AlwaysClamp);
                 for (std::size_t i = 0; i < scene.objects.size(); ++i) {
                     litkit::SceneObject& object = scene.objects[i];
                     const std::string label =
                         (object.name.empty() ? "objects[" + std::to_string(i) + "]" : object.name) +
                         "##object" + std::to_string(i);
                     if (!ImGui::TreeNode(label.c_str())) continue;
-                    litkit::Material& m = object.material;
-                    edited |= ImGui::ColorEdit3("color", &m.color.x);
-                    edited |= ImGui::SliderFloat("ka", &m.ka, 0.0f, 1.0f);
-                    edited |= ImGui::SliderFloat("kd", &m.kd, 0.0f, 1.0f);
-                    edited |= ImGui::SliderFloat("ks", &m.ks, 0.0f, 1.0f);
-                    edited |= ImGui::SliderFloat("shininess", &m.shininess, 0.0f, 256.0f);
-                    litkit::for_each_model_parameter(
-                        [&](const litkit::ModelParameter& parameter, float& value) {
-                            const std::string name(parameter.key);
-                            if (parameter.whole) {
-                                int whole = static_cast<int>(value);
-                                if (ImGui::SliderInt(name.c_str(), &whole,
-                                                     static_cast<int>(parameter.low),
-                                                     static_cast<int>(parameter.high))) {
-                                    value = static_cast<float>(whole);
-                                    edited = true;
-                                }
-                            } else {
-                                edited |= ImGui::SliderFloat(name.c_str(), &value, parameter.low,
-                                                             parameter.high);
-                            }
-                        },
-                        m);
+                    edited |= material_controls(object.material);
                     ImGui::TreePop();
                 }
                 for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -480,40 +474,7 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                         (light.name.empty() ? "lights[" + std::to_string(i) + "]" : light.name) +
                         "##light" + std::to_string(i);
                     if (!ImGui::TreeNode(label.c_str())) continue;
-                    edited |= ImGui::SliderFloat("intensity", &light.light.intensity, 0.0f, 100.0f);
-                    edited |= ImGui::ColorEdit3("color", &light.light.color.x);
-                    std::visit(
-                        [&](auto& kind) {
-                            using K = std::decay_t<decltype(kind)>;
-                            const float half =
-                                std::max({scene.room.width, scene.room.height, scene.room.depth}) /
-                                2;
-                            if constexpr (std::is_same_v<K, litkit::DirectionalLight>) {
-                                edited |= ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
-                            } else if constexpr (std::is_same_v<K, litkit::PointLight> ||
-                                                 std::is_same_v<K, litkit::SpotLight>) {
-                                glm::vec3 position = kind.position;
-                                if (ImGui::DragFloat3("position", &position.x, 0.02f, -half,
-                                                      half) &&
-                                    inside_room(scene.room, position)) {
-                                    kind.position = position;
-                                    edited = true;
-                                }
-                                edited |= ImGui::DragFloat3("attenuation", &kind.attenuation.x,
-                                                            0.01f, 0.0f, 10.0f);
-                                if constexpr (std::is_same_v<K, litkit::SpotLight>) {
-                                    edited |=
-                                        ImGui::DragFloat3("direction", &kind.direction.x, 0.01f);
-                                    edited |= ImGui::SliderFloat("cutoff", &kind.cutoff_degrees,
-                                                                 0.5f, 90.0f);
-                                    edited |= ImGui::SliderFloat("exponent", &kind.exponent, 0.0f,
-                                                                 128.0f);
-                                    edited |=
-                                        ImGui::SliderFloat("penumbra", &kind.penumbra, 0.0f, 1.0f);
-                                }
-                            }
-                        },
-                        light.light.kind);
+                    edited |= light_controls(light, scene.room);
                     ImGui::TreePop();
                 }
                 ImGui::Text("frame %.1f ms, %dx%d", frame_ms, shown_width, shown_height);
