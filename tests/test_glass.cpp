@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -364,6 +365,31 @@ TEST(GlassReference, FlatAndGouraudGlassWithGamma) {
     gouraud.material.color = {0.9f, 0.7f, 0.3f};
     scene.objects.push_back(gouraud);
     expect_matches_reference(scene, "flat_gouraud_gamma");
+}
+
+// Every example with glass (examples/*.toml where some object's transmission
+// is above 0; tests/test_render_reference.cpp checks the others), 160 pixels
+// wide with its aspect ratio kept.
+TEST(GlassReference, EveryGlassExample) {
+    const std::filesystem::path examples = std::filesystem::path(LITKIT_SOURCE_DIR) / "examples";
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(examples))
+        if (entry.path().extension() == ".toml") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    int glass_examples = 0;
+    for (const std::filesystem::path& file : files) {
+        Scene scene = litkit::load_scene(std::span(&file, 1));
+        if (std::none_of(scene.objects.begin(), scene.objects.end(),
+                         [](const SceneObject& o) { return o.material.transmission > 0.0f; }))
+            continue;
+        ++glass_examples;
+        SCOPED_TRACE(file.filename().string());
+        const double aspect = double(scene.output.width) / double(scene.output.height);
+        scene.output.width = 160;
+        scene.output.height = int(std::lround(160.0 / aspect));
+        expect_matches_reference(scene, "example_" + file.stem().string());
+    }
+    EXPECT_EQ(glass_examples, 5);  // glass-lens, water-slab, prism, coloured-glass, two-glasses
 }
 
 // ---- Closed forms ----
