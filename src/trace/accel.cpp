@@ -18,10 +18,10 @@
 // margin far above the rounding of the slab test and of the triangle
 // test's shear), a subtree is skipped only when its entry lies beyond the
 // best hit so far (a tie at the same distance may still win by its smaller
-// index), and every triangle the four-wide test does not rule out is
-// decided by the one scalar watertight test below, whose operations the
-// four-wide test repeats exactly (lanes with an edge function of 0, which
-// the scalar test recomputes in double, always go to it).
+// index), and the four-wide triangle test repeats the operations of the
+// scalar watertight test below exactly, so its hits are the scalar test's
+// (lanes with an edge function of 0, which the scalar test recomputes in
+// double, go to the scalar test itself).
 #include "trace/accel.hpp"
 
 #include <glm/geometric.hpp>
@@ -209,15 +209,6 @@ struct Accel::Impl {
         return leaf_bit | static_cast<std::uint32_t>(blocks.size() - 1);
     }
 
-    void prefetch(std::uint32_t child) const {
-        const char* at = child & leaf_bit
-                             ? reinterpret_cast<const char*>(&blocks[child & ~leaf_bit])
-                             : reinterpret_cast<const char*>(&nodes[child]);
-        for (std::size_t line = 0; line < (child & leaf_bit ? sizeof(Block) : sizeof(Node4));
-             line += 64)
-            __builtin_prefetch(at + line);
-    }
-
     void test_block(const Prepared& ray, const Block& block, Facing facing, Hit& best) const {
         using simd::Floats;
         const int k[3] = {ray.kx, ray.ky, ray.kz};
@@ -245,11 +236,34 @@ struct Accel::Impl {
         const Floats t = t_scaled / xsimd::select(det == zero, Floats(1.0f), det);
         const float limit = std::min(best.t, ray.t_max);
         const simd::Mask in_range = (t > Floats(ray.t_min)) & (t <= Floats(limit));
-        unsigned candidates = simd::bits(any_zero | (~mixed & facing_ok & in_range));
-        candidates &= (1u << block.count) - 1u;
-        while (candidates) {
-            const int l = __builtin_ctz(candidates);
-            candidates &= candidates - 1;
+        const unsigned lanes = (1u << block.count) - 1u;
+        // Lanes with an edge function of 0: the scalar test, which redoes
+        // them in double.
+        unsigned retest = simd::bits(any_zero) & lanes;
+        // The others: the four-wide test's u, v, w, det and t are the scalar
+        // test's, operation for operation, so its verdict stands; only the
+        // tie rule and t < t_max are left.
+        unsigned hits = simd::bits(~any_zero & ~mixed & facing_ok & in_range) & lanes;
+        if (hits) {
+            alignas(16) float t_lane[4], v_lane[4], w_lane[4], det_lane[4];
+            t.store_aligned(t_lane), v.store_aligned(v_lane), w.store_aligned(w_lane);
+            det.store_aligned(det_lane);
+            do {
+                const int l = __builtin_ctz(hits);
+                hits &= hits - 1;
+                const float tl = t_lane[l];
+                const std::uint32_t triangle = block.triangle[l];
+                if (!(tl < ray.t_max) || tl > best.t ||
+                    (tl == best.t && (block.object > best.object ||
+                                      (block.object == best.object && triangle > best.triangle))))
+                    continue;
+                best = Hit{tl, block.object, triangle, v_lane[l] / det_lane[l],
+                           w_lane[l] / det_lane[l]};
+            } while (hits);
+        }
+        while (retest) {
+            const int l = __builtin_ctz(retest);
+            retest &= retest - 1;
             const auto corner = [&](int c) {
                 return glm::vec3(block.corner[3 * c][l], block.corner[3 * c + 1][l],
                                  block.corner[3 * c + 2][l]);
@@ -299,15 +313,12 @@ struct Accel::Impl {
                 const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
                 unsigned hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
                 if (!hit) break;
-                // Fetch the children entered while they are sorted (random
-                // rays wait on memory more than on arithmetic).
-                for (unsigned h = hit; h; h &= h - 1) prefetch(node.child[__builtin_ctz(h)]);
-                alignas(16) float entry[4];
-                xsimd::max(tn_c, t_min).store_aligned(entry);
                 if ((hit & (hit - 1)) == 0) {  // one child
                     child = node.child[__builtin_ctz(hit)];
                     continue;
                 }
+                alignas(16) float entry[4];
+                xsimd::max(tn_c, t_min).store_aligned(entry);
                 // Nearest first: the others go on the stack, farthest deepest.
                 Entry order[4];
                 int n = 0;
