@@ -273,6 +273,14 @@ struct Accel::Impl {
         }
     }
 
+    // Forward: rays with t_min >= 0 (every ray of the ray tree) take a
+    // cheaper box test. Its tests, with w = 1 + 2·margin and k = 1 + 4·margin,
+    //   max(t_near, t_min / w) <= min(k · t_far, w · limit),
+    // accept every child the general test below accepts (whose conditions,
+    // t_near widened <= t_far widened, <= limit, t_far widened >= t_min,
+    // imply these for t_min >= 0 and limit > 0; for limit <= t_min no
+    // triangle can be hit at all), so it enters at least the same children.
+    template <bool Forward>
     Hit traverse(const Prepared& ray, std::uint32_t root, Facing facing) const {
         using simd::Floats;
         Hit best;
@@ -287,9 +295,17 @@ struct Accel::Impl {
         int size = 0;
         stack[size++] = {root, -std::numeric_limits<float>::infinity()};
         const Floats t_min(ray.t_min), zero(0.0f), lower(1.0f - margin), upper(1.0f + margin);
+        constexpr float w = 1.0f + 2.0f * margin;
+        const Floats t_min_w(ray.t_min / w), k(1.0f + 4.0f * margin);
+        // The distance beyond which no subtree is entered: the best hit so
+        // far or t_max, widened by w in the forward test.
+        const auto reach = [&] {
+            const float limit = std::min(best.t, ray.t_max);
+            return Forward ? limit * w : limit;
+        };
         while (size > 0) {
             const Entry e = stack[--size];
-            if (e.entry > std::min(best.t, ray.t_max)) continue;
+            if (e.entry > reach()) continue;
             std::uint32_t child = e.child;
             while (true) {
                 if (child & leaf_bit) {
@@ -297,7 +313,7 @@ struct Accel::Impl {
                     break;
                 }
                 const Node4& node = nodes[child];
-                const Floats limit(std::min(best.t, ray.t_max));
+                const Floats limit(reach());
                 Floats t_near[3], t_far[3];
                 for (int a = 0; a < 3; ++a) {
                     t_near[a] =
@@ -305,20 +321,29 @@ struct Accel::Impl {
                     t_far[a] =
                         (Floats::load_aligned(node.box[ray.far_row[a]]) - ray.o[a]) * ray.inv[a];
                 }
-                const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
                 const Floats tf = xsimd::min(xsimd::min(t_far[0], t_far[1]), t_far[2]);
-                // Widened by `margin` of their size (products, not sums, so
-                // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
-                const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
-                const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
-                unsigned hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
+                unsigned hit;
+                Floats entries;
+                if constexpr (Forward) {
+                    entries = xsimd::max(xsimd::max(t_near[0], t_near[1]),
+                                         xsimd::max(t_near[2], t_min_w));
+                    hit = simd::bits((entries <= tf * k) & (entries <= limit));
+                } else {
+                    const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
+                    // Widened by `margin` of their size (products, not sums, so
+                    // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
+                    const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
+                    const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
+                    hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
+                    entries = xsimd::max(tn_c, t_min);
+                }
                 if (!hit) break;
                 if ((hit & (hit - 1)) == 0) {  // one child
                     child = node.child[__builtin_ctz(hit)];
                     continue;
                 }
                 alignas(16) float entry[4];
-                xsimd::max(tn_c, t_min).store_aligned(entry);
+                entries.store_aligned(entry);
                 // Nearest first: the others go on the stack, farthest deepest.
                 Entry order[4];
                 int n = 0;
@@ -379,12 +404,17 @@ Accel::Accel(Accel&&) noexcept = default;
 Accel& Accel::operator=(Accel&&) noexcept = default;
 
 Hit Accel::nearest_front(const Ray& ray) const {
-    return impl_->traverse(Prepared(ray), impl_->top, Facing::Front);
+    const Prepared prepared(ray);
+    return ray.t_min >= 0.0f ? impl_->traverse<true>(prepared, impl_->top, Facing::Front)
+                             : impl_->traverse<false>(prepared, impl_->top, Facing::Front);
 }
 
 Hit Accel::nearest_back(const Ray& ray, std::uint32_t object) const {
     if (object >= impl_->roots.size()) return Hit{};
-    return impl_->traverse(Prepared(ray), impl_->roots[object], Facing::Back);
+    const Prepared prepared(ray);
+    const std::uint32_t root = impl_->roots[object];
+    return ray.t_min >= 0.0f ? impl_->traverse<true>(prepared, root, Facing::Back)
+                             : impl_->traverse<false>(prepared, root, Facing::Back);
 }
 
 }  // namespace litkit::trace
