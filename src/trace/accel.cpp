@@ -209,7 +209,8 @@ struct Accel::Impl {
         return leaf_bit | static_cast<std::uint32_t>(blocks.size() - 1);
     }
 
-    void test_block(const Prepared& ray, const Block& block, Facing facing, Hit& best) const {
+    [[gnu::always_inline]] void test_block(const Prepared& ray, const Block& block, Facing facing,
+                                           Hit& best) const {
         using simd::Floats;
         const int k[3] = {ray.kx, ray.ky, ray.kz};
         // Corner v relative to the origin along kz, and sheared along kx, ky.
