@@ -102,7 +102,7 @@ void Pipeline::refract_row(int y, int width, int begin, int end, BandScratch& s)
         const glm::vec3& p1 = object.positions[corners[1]];
         const glm::vec3& p2 = object.positions[corners[2]];
         const glm::vec3 point = point_on_ray(rays, width, x, 1.0f / s.depth[i]);
-        const glm::vec3 face = face_normal(p0, p1, p2);
+        const glm::vec3& face = ray_tree->face(tri->object, tri->source);
         const glm::vec3 weights = barycentric(point, p0, p1, p2);
         glm::vec3 normal = face;  // N_s: flat and faceted
         if (glass.smooth) {

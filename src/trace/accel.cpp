@@ -18,10 +18,10 @@
 // margin far above the rounding of the slab test and of the triangle
 // test's shear), a subtree is skipped only when its entry lies beyond the
 // best hit so far (a tie at the same distance may still win by its smaller
-// index), and every triangle the four-wide test does not rule out is
-// decided by the one scalar watertight test below, whose operations the
-// four-wide test repeats exactly (lanes with an edge function of 0, which
-// the scalar test recomputes in double, always go to it).
+// index), and the four-wide triangle test repeats the operations of the
+// scalar watertight test below exactly, so its hits are the scalar test's
+// (lanes with an edge function of 0, which the scalar test recomputes in
+// double, go to the scalar test itself).
 #include "trace/accel.hpp"
 
 #include <glm/geometric.hpp>
@@ -218,7 +218,8 @@ struct Accel::Impl {
             __builtin_prefetch(at + line);
     }
 
-    void test_block(const Prepared& ray, const Block& block, Facing facing, Hit& best) const {
+    [[gnu::always_inline]] void test_block(const Prepared& ray, const Block& block, Facing facing,
+                                           Hit& best) const {
         using simd::Floats;
         const int k[3] = {ray.kx, ray.ky, ray.kz};
         // Corner v relative to the origin along kz, and sheared along kx, ky.
@@ -245,11 +246,34 @@ struct Accel::Impl {
         const Floats t = t_scaled / xsimd::select(det == zero, Floats(1.0f), det);
         const float limit = std::min(best.t, ray.t_max);
         const simd::Mask in_range = (t > Floats(ray.t_min)) & (t <= Floats(limit));
-        unsigned candidates = simd::bits(any_zero | (~mixed & facing_ok & in_range));
-        candidates &= (1u << block.count) - 1u;
-        while (candidates) {
-            const int l = __builtin_ctz(candidates);
-            candidates &= candidates - 1;
+        const unsigned lanes = (1u << block.count) - 1u;
+        // Lanes with an edge function of 0: the scalar test, which redoes
+        // them in double.
+        unsigned retest = simd::bits(any_zero) & lanes;
+        // The others: the four-wide test's u, v, w, det and t are the scalar
+        // test's, operation for operation, so its verdict stands; only the
+        // tie rule and t < t_max are left.
+        unsigned hits = simd::bits(~any_zero & ~mixed & facing_ok & in_range) & lanes;
+        if (hits) {
+            alignas(16) float t_lane[4], v_lane[4], w_lane[4], det_lane[4];
+            t.store_aligned(t_lane), v.store_aligned(v_lane), w.store_aligned(w_lane);
+            det.store_aligned(det_lane);
+            do {
+                const int l = __builtin_ctz(hits);
+                hits &= hits - 1;
+                const float tl = t_lane[l];
+                const std::uint32_t triangle = block.triangle[l];
+                if (!(tl < ray.t_max) || tl > best.t ||
+                    (tl == best.t && (block.object > best.object ||
+                                      (block.object == best.object && triangle > best.triangle))))
+                    continue;
+                best = Hit{tl, block.object, triangle, v_lane[l] / det_lane[l],
+                           w_lane[l] / det_lane[l]};
+            } while (hits);
+        }
+        while (retest) {
+            const int l = __builtin_ctz(retest);
+            retest &= retest - 1;
             const auto corner = [&](int c) {
                 return glm::vec3(block.corner[3 * c][l], block.corner[3 * c + 1][l],
                                  block.corner[3 * c + 2][l]);
@@ -259,6 +283,14 @@ struct Accel::Impl {
         }
     }
 
+    // Forward: rays with t_min >= 0 (every ray of the ray tree) take a
+    // cheaper box test. Its tests, with w = 1 + 2·margin and k = 1 + 4·margin,
+    //   max(t_near, t_min / w) <= min(k · t_far, w · limit),
+    // accept every child the general test below accepts (whose conditions,
+    // t_near widened <= t_far widened, <= limit, t_far widened >= t_min,
+    // imply these for t_min >= 0 and limit > 0; for limit <= t_min no
+    // triangle can be hit at all), so it enters at least the same children.
+    template <bool Forward>
     Hit traverse(const Prepared& ray, std::uint32_t root, Facing facing) const {
         using simd::Floats;
         Hit best;
@@ -273,9 +305,17 @@ struct Accel::Impl {
         int size = 0;
         stack[size++] = {root, -std::numeric_limits<float>::infinity()};
         const Floats t_min(ray.t_min), zero(0.0f), lower(1.0f - margin), upper(1.0f + margin);
+        constexpr float w = 1.0f + 2.0f * margin;
+        const Floats t_min_w(ray.t_min / w), k(1.0f + 4.0f * margin);
+        // The distance beyond which no subtree is entered: the best hit so
+        // far or t_max, widened by w in the forward test.
+        const auto reach = [&] {
+            const float limit = std::min(best.t, ray.t_max);
+            return Forward ? limit * w : limit;
+        };
         while (size > 0) {
             const Entry e = stack[--size];
-            if (e.entry > std::min(best.t, ray.t_max)) continue;
+            if (e.entry > reach()) continue;
             std::uint32_t child = e.child;
             while (true) {
                 if (child & leaf_bit) {
@@ -283,7 +323,7 @@ struct Accel::Impl {
                     break;
                 }
                 const Node4& node = nodes[child];
-                const Floats limit(std::min(best.t, ray.t_max));
+                const Floats limit(reach());
                 Floats t_near[3], t_far[3];
                 for (int a = 0; a < 3; ++a) {
                     t_near[a] =
@@ -291,23 +331,33 @@ struct Accel::Impl {
                     t_far[a] =
                         (Floats::load_aligned(node.box[ray.far_row[a]]) - ray.o[a]) * ray.inv[a];
                 }
-                const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
                 const Floats tf = xsimd::min(xsimd::min(t_far[0], t_far[1]), t_far[2]);
-                // Widened by `margin` of their size (products, not sums, so
-                // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
-                const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
-                const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
-                unsigned hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
+                unsigned hit;
+                Floats entries;
+                if constexpr (Forward) {
+                    entries = xsimd::max(xsimd::max(t_near[0], t_near[1]),
+                                         xsimd::max(t_near[2], t_min_w));
+                    hit = simd::bits((entries <= tf * k) & (entries <= limit));
+                } else {
+                    const Floats tn = xsimd::max(xsimd::max(t_near[0], t_near[1]), t_near[2]);
+                    // Widened by `margin` of their size (products, not sums, so
+                    // that an empty child's ∞ stays ∞ rather than ∞ − ∞).
+                    const Floats tn_c = xsimd::select(tn > zero, tn * lower, tn * upper);
+                    const Floats tf_c = xsimd::select(tf > zero, tf * upper, tf * lower);
+                    hit = simd::bits((tn_c <= tf_c) & (tn_c <= limit) & (tf_c >= t_min));
+                    entries = xsimd::max(tn_c, t_min);
+                }
                 if (!hit) break;
-                // Fetch the children entered while they are sorted (random
-                // rays wait on memory more than on arithmetic).
-                for (unsigned h = hit; h; h &= h - 1) prefetch(node.child[__builtin_ctz(h)]);
-                alignas(16) float entry[4];
-                xsimd::max(tn_c, t_min).store_aligned(entry);
                 if ((hit & (hit - 1)) == 0) {  // one child
                     child = node.child[__builtin_ctz(hit)];
                     continue;
                 }
+                // Fetch the children entered while they are sorted (rays in a
+                // hierarchy larger than the caches wait on memory more than on
+                // arithmetic; one child is read at once, with no time to win).
+                for (unsigned h = hit; h; h &= h - 1) prefetch(node.child[__builtin_ctz(h)]);
+                alignas(16) float entry[4];
+                entries.store_aligned(entry);
                 // Nearest first: the others go on the stack, farthest deepest.
                 Entry order[4];
                 int n = 0;
@@ -368,12 +418,17 @@ Accel::Accel(Accel&&) noexcept = default;
 Accel& Accel::operator=(Accel&&) noexcept = default;
 
 Hit Accel::nearest_front(const Ray& ray) const {
-    return impl_->traverse(Prepared(ray), impl_->top, Facing::Front);
+    const Prepared prepared(ray);
+    return ray.t_min >= 0.0f ? impl_->traverse<true>(prepared, impl_->top, Facing::Front)
+                             : impl_->traverse<false>(prepared, impl_->top, Facing::Front);
 }
 
 Hit Accel::nearest_back(const Ray& ray, std::uint32_t object) const {
     if (object >= impl_->roots.size()) return Hit{};
-    return impl_->traverse(Prepared(ray), impl_->roots[object], Facing::Back);
+    const Prepared prepared(ray);
+    const std::uint32_t root = impl_->roots[object];
+    return ray.t_min >= 0.0f ? impl_->traverse<true>(prepared, root, Facing::Back)
+                             : impl_->traverse<false>(prepared, root, Facing::Back);
 }
 
 }  // namespace litkit::trace

@@ -89,10 +89,17 @@ RayTree::RayTree(std::span<const TracedObject> objects,
                  TraceSettings settings)
     : objects_(objects), lights_(lights), accel_(accel), settings_(settings) {
     no_specular_.reserve(objects.size());
-    for (const TracedObject& object : objects) {
+    faces_.resize(objects.size());
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const TracedObject& object = objects[o];
         equations::MaterialT<float> material = object.material;
         material.ks = 0.0f;
         no_specular_.push_back(material);
+        faces_[o].reserve(object.triangles.size());
+        for (const auto& t : object.triangles)
+            faces_[o].push_back(face_normal(object.positions[t[0]], object.positions[t[1]],
+                                            object.positions[t[2]]));
+        clear_.push_back(object.absorption_color == glm::vec3(1.0f));
     }
 }
 
@@ -147,8 +154,7 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
     const glm::vec3 point = b0 * object.positions[corners[0]] +
                             hit.b1 * object.positions[corners[1]] +
                             hit.b2 * object.positions[corners[2]];
-    const glm::vec3 face = face_normal(object.positions[corners[0]], object.positions[corners[1]],
-                                       object.positions[corners[2]]);
+    const glm::vec3& face = faces_[hit.object][hit.triangle];
     glm::vec3 normal = face;
     if (object.smooth) {
         // Surfaces reached by rays are lit per point: gouraud as phong.
@@ -189,8 +195,9 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
         own = (1.0f - object.transmission) * parts.ambient_diffuse +
               (parts.all - parts.ambient_diffuse);
         share = object.transmission;
-    } else {
-        // Item 7: Beer–Lambert along the segment inside.
+    } else if (!clear_[hit.object]) {
+        // Item 7: Beer–Lambert along the segment inside (1^x = 1: nothing to
+        // do for a colourless glass).
         absorbed = to_glm(equations::absorption(to_vec3(object.absorption_color), hit.t,
                                                 object.absorption_distance));
         weight = weight * absorbed;
@@ -239,9 +246,7 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
 glm::vec3 RayTree::first_hit(const FirstHit& hit, std::uint64_t& rays,
                              std::vector<RayNode>* record) const {
     const TracedObject& object = objects_[hit.object];
-    const auto& corners = object.triangles[hit.triangle];
-    const glm::vec3 face = face_normal(object.positions[corners[0]], object.positions[corners[1]],
-                                       object.positions[corners[2]]);
+    const glm::vec3& face = faces_[hit.object][hit.triangle];
     const float share = object.transmission;
     const Bend b =
         bend(hit.direction, hit.shading_normal, face, true, settings_.room_ior / object.ior);

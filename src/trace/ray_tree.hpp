@@ -24,7 +24,7 @@ namespace litkit::trace {
 
 // What the ray tree needs of an object: its triangles in world space with
 // their vertex normals (views into its owner's arrays; face normals, DD8,
-// it finds itself), its surface and its glass.
+// the ray tree finds once), its surface and its glass.
 struct TracedObject {
     std::span<const glm::vec3> positions;
     std::span<const glm::vec3> normals;  // per vertex, unit or zero (DD9, §9.2)
@@ -83,6 +83,12 @@ class RayTree {
     Local local(std::uint32_t object, const glm::vec3& point, const glm::vec3& normal,
                 const glm::vec3& to_eye) const;
 
+    // N_g of an object's triangle (face_normal, litkit/mesh.hpp), found once
+    // for all its hits.
+    const glm::vec3& face(std::uint32_t object, std::uint32_t triangle) const {
+        return faces_[object][triangle];
+    }
+
   private:
     struct Path;
     glm::vec3 trace(const Path& path, int parent_node) const;
@@ -93,6 +99,8 @@ class RayTree {
     const Accel& accel_;
     TraceSettings settings_;
     std::vector<equations::MaterialT<float>> no_specular_;  // per object: k_s = 0
+    std::vector<std::vector<glm::vec3>> faces_;             // per object, per triangle: N_g
+    std::vector<bool> clear_;  // per object: its absorption colour is (1, 1, 1)
 };
 
 }  // namespace litkit::trace
