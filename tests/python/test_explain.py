@@ -56,12 +56,7 @@ material = { color = [255, 255, 255], transmission = 1, ior = 1.5 }
 
 
 def glass_scene():
-    try:
-        return litkit.loads(GLASS_SCENE)
-    except litkit.SceneError as error:  # a build whose scene reader lacks §10.1's keys
-        if "transmission" in str(error):
-            pytest.skip("this build's scene reader does not read transmission yet")
-        raise
+    return litkit.loads(GLASS_SCENE)
 
 
 def test_explain_is_the_command_and_the_picture():
