@@ -69,6 +69,19 @@ Bend bend(const glm::vec3& d, const glm::vec3& shading_normal, const glm::vec3& 
     return result;
 }
 
+// Items 1–6 of one interface, as a node shows them.
+void record_interface(RayNode& node, const Bend& b, float n1, float n2) {
+    node.outcome = RayNode::Outcome::Interface;
+    node.n1 = n1;
+    node.n2 = n2;
+    node.theta1 = degrees_of(b.at.cos_incident);
+    node.theta2 = b.at.total_internal_reflection ? 0.0f : degrees_of(b.at.cos_refracted);
+    node.k = b.at.k;
+    node.fresnel = b.at.fresnel;
+    node.total_internal_reflection = b.at.total_internal_reflection;
+    node.geometric_normal = b.geometric;
+}
+
 }  // namespace
 
 // One ray still to trace: where it starts and goes, how deep it is and what
@@ -147,6 +160,30 @@ glm::vec3 RayTree::trace(const Path& path, int parent_node) const {
     return interact(path, hit, node);
 }
 
+// F·L(R) + (1 − F)·L(T) at `point`, where `path` meets the interface `at`:
+// the mirror ray stays on the path's side, the refracted one crosses into
+// `beyond` (no_object: the room's medium). Each ray's weight is
+// weight·(share·F) or weight·(share·(1 − F)): `weight` the path's (times A
+// inside), `share` t entering from the room, else 1.
+glm::vec3 RayTree::split(const Path& path, const glm::vec3& point,
+                         const equations::Interface<float>& at, const glm::vec3& weight,
+                         float share, std::uint32_t beyond, int node) const {
+    const float fresnel = at.fresnel;
+    const Path reflected{point,          glm::normalize(to_glm(at.reflected)),
+                         path.depth + 1, weight * (share * fresnel),
+                         path.inside,    RayNode::Kind::Reflected,
+                         path.record,    path.rays};
+    glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
+    if (!at.total_internal_reflection) {
+        const Path refracted{point,          glm::normalize(to_glm(at.refracted)),
+                             path.depth + 1, weight * (share * (1.0f - fresnel)),
+                             beyond,         RayNode::Kind::Refracted,
+                             path.record,    path.rays};
+        light += (1.0f - fresnel) * trace(refracted, node);
+    }
+    return light;
+}
+
 glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
     const TracedObject& object = objects_[hit.object];
     const auto& corners = object.triangles[hit.triangle];
@@ -205,39 +242,15 @@ glm::vec3 RayTree::interact(const Path& path, const Hit& hit, int node) const {
     const float n1 = entering ? settings_.room_ior : object.ior;
     const float n2 = entering ? object.ior : settings_.room_ior;
     const Bend b = bend(path.direction, normal, face, entering, n1 / n2);
-    const float fresnel = b.at.fresnel;
     if (RayNode* n = record()) {
-        n->outcome = RayNode::Outcome::Interface;
+        record_interface(*n, b, n1, n2);
         n->absorption = absorbed;
-        n->n1 = n1;
-        n->n2 = n2;
-        n->theta1 = degrees_of(b.at.cos_incident);
-        n->theta2 = b.at.total_internal_reflection ? 0.0f : degrees_of(b.at.cos_refracted);
-        n->k = b.at.k;
-        n->fresnel = fresnel;
-        n->total_internal_reflection = b.at.total_internal_reflection;
-        n->geometric_normal = b.geometric;
         n->transmission = entering ? object.transmission : 0.0f;
         n->local = own;
         n->contribution = path.weight * own;
     }
-    // The mirror ray stays on the ray's side, the refracted one crosses.
-    const Path reflected{point,          glm::normalize(to_glm(b.at.reflected)),
-                         path.depth + 1, weight * (share * fresnel),
-                         path.inside,    RayNode::Kind::Reflected,
-                         path.record,    path.rays};
-    glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
-    if (!b.at.total_internal_reflection) {
-        const Path refracted{point,
-                             glm::normalize(to_glm(b.at.refracted)),
-                             path.depth + 1,
-                             weight * (share * (1.0f - fresnel)),
-                             entering ? hit.object : no_object,
-                             RayNode::Kind::Refracted,
-                             path.record,
-                             path.rays};
-        light += (1.0f - fresnel) * trace(refracted, node);
-    }
+    const glm::vec3 light =
+        split(path, point, b.at, weight, share, entering ? hit.object : no_object, node);
     const glm::vec3 radiance = entering ? own + share * light : absorbed * light;
     if (RayNode* n = record()) n->radiance = radiance;
     return radiance;
@@ -250,7 +263,6 @@ glm::vec3 RayTree::first_hit(const FirstHit& hit, std::uint64_t& rays,
     const float share = object.transmission;
     const Bend b =
         bend(hit.direction, hit.shading_normal, face, true, settings_.room_ior / object.ior);
-    const float fresnel = b.at.fresnel;
     int node = -1;
     if (record) {
         RayNode n;
@@ -260,30 +272,15 @@ glm::vec3 RayTree::first_hit(const FirstHit& hit, std::uint64_t& rays,
         n.object = hit.object;
         n.triangle = hit.triangle;
         n.point = hit.point;
-        n.n1 = settings_.room_ior;
-        n.n2 = object.ior;
-        n.theta1 = degrees_of(b.at.cos_incident);
-        n.theta2 = b.at.total_internal_reflection ? 0.0f : degrees_of(b.at.cos_refracted);
-        n.k = b.at.k;
-        n.fresnel = fresnel;
-        n.total_internal_reflection = b.at.total_internal_reflection;
-        n.geometric_normal = b.geometric;
+        record_interface(n, b, settings_.room_ior, object.ior);
         n.transmission = share;
         node = static_cast<int>(record->size());
         record->push_back(n);
     }
-    const Path reflected{hit.point, glm::normalize(to_glm(b.at.reflected)),
-                         2,         glm::vec3(share * fresnel),
-                         no_object, RayNode::Kind::Reflected,
-                         record,    &rays};
-    glm::vec3 light = fresnel > 0.0f ? fresnel * trace(reflected, node) : glm::vec3(0.0f);
-    if (!b.at.total_internal_reflection) {
-        const Path refracted{hit.point,  glm::normalize(to_glm(b.at.refracted)),
-                             2,          glm::vec3(share * (1.0f - fresnel)),
-                             hit.object, RayNode::Kind::Refracted,
-                             record,     &rays};
-        light += (1.0f - fresnel) * trace(refracted, node);
-    }
+    const Path camera{glm::vec3(0.0f), hit.direction,         1,      glm::vec3(1.0f),
+                      no_object,       RayNode::Kind::Camera, record, &rays};
+    const glm::vec3 light =
+        split(camera, hit.point, b.at, glm::vec3(1.0f), share, hit.object, node);
     return share * light;
 }
 

@@ -18,6 +18,7 @@
 #include "litkit/equations.hpp"
 #include "litkit/lighting.hpp"
 #include "litkit/ray_tree.hpp"
+#include "litkit/refraction.hpp"
 #include "trace/accel.hpp"
 
 namespace litkit::trace {
@@ -93,6 +94,8 @@ class RayTree {
     struct Path;
     glm::vec3 trace(const Path& path, int parent_node) const;
     glm::vec3 interact(const Path& path, const Hit& hit, int node) const;
+    glm::vec3 split(const Path& path, const glm::vec3& point, const equations::Interface<float>& at,
+                    const glm::vec3& weight, float share, std::uint32_t beyond, int node) const;
 
     std::span<const TracedObject> objects_;
     std::span<const equations::PreparedLight> lights_;
