@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/scale_free.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/error.hpp"
 
@@ -86,7 +87,7 @@ PreparedLight prepare_light(const Light& light) {
                 prepared.kind = PreparedLight::Kind::Ambient;
             } else if constexpr (std::is_same_v<Kind, DirectionalLight>) {
                 prepared.kind = PreparedLight::Kind::Directional;
-                prepared.direction = glm::normalize(kind.direction);
+                prepared.direction = scale_free::unit(kind.direction);
             } else if constexpr (std::is_same_v<Kind, PointLight>) {
                 prepared.kind = PreparedLight::Kind::Point;
                 prepared.position = kind.position;
@@ -96,7 +97,7 @@ PreparedLight prepare_light(const Light& light) {
                 prepared.kind = PreparedLight::Kind::Spot;
                 prepared.position = kind.position;
                 prepared.attenuation = kind.attenuation;
-                prepared.direction = glm::normalize(kind.direction);
+                prepared.direction = scale_free::unit(kind.direction);
                 double radians = static_cast<double>(kind.cutoff_degrees) * (M_PI / 180.0);
                 prepared.cos_cutoff = static_cast<float>(std::cos(radians));
                 // docs/spec.md §9.3: θi = θo·(1 − penumbra); penumbra 0 gives the hard edge.

@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/scale_free.hpp"
+
 namespace litkit {
 
 namespace {
@@ -19,8 +21,9 @@ Camera make_camera(const Observer& observer, int width, int height) {
     const glm::mat4 projection(glm::perspective(glm::radians(double(observer.fov_degrees)),
                                                 double(width) / double(height),
                                                 double(observer.near), double(observer.far)));
+    // glm's lookAt, free of scale: a look_at of 1e-30 draws what one of 1 draws.
     camera.view_projection =
-        projection * glm::lookAt(observer.position, observer.look_at, observer.up);
+        projection * scale_free::look_at(observer.position, observer.look_at, observer.up);
     // The rays' basis in double, rounded once to float, as the projection.
     const glm::dvec3 eye = glm::dvec3(observer.position);
     const glm::dvec3 f = glm::normalize(glm::dvec3(observer.look_at) - eye);

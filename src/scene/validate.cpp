@@ -19,6 +19,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/scale_free.hpp"
 #include "geometry/convex.hpp"
 #include "litkit/shapes.hpp"
 #include "scene/float_range.hpp"
@@ -720,7 +721,7 @@ class Validator {
         if (!(aspect > 0.0f)) return;
         const glm::mat4 view_projection =
             glm::perspective(glm::radians(o.fov_degrees), aspect, o.near, o.far) *
-            glm::lookAt(o.position, o.look_at, o.up);
+            scale_free::look_at(o.position, o.look_at, o.up);
         for (std::size_t i = 0; i < hulls_.size(); ++i) {
             if (!hulls_[i] || hulls_[i]->empty()) continue;
             bool outside[6] = {true, true, true, true, true, true};

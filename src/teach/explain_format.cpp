@@ -9,6 +9,7 @@
 #include "litkit/explain.hpp"
 
 #include "core/json.hpp"
+#include "core/scale_free.hpp"
 #include "teach/explain_text.hpp"
 
 namespace litkit {
@@ -52,7 +53,7 @@ std::string evaluation_lines(const PointEvaluation& point, const Scene& scene,
         if (const auto* point_light = std::get_if<PointLight>(&light.kind)) {
             text += "   (d = " + num(glm::length(point_light->position - point.position)) + ")";
         } else if (const auto* spot = std::get_if<SpotLight>(&light.kind)) {
-            const float c = -glm::dot(terms.to_light, glm::normalize(spot->direction));
+            const float c = -glm::dot(terms.to_light, scale_free::unit(spot->direction));
             text += "   (d = " + num(glm::length(spot->position - point.position)) +
                     ", c = " + num(c) +
                     ", cos(cutoff) = " + num(std::cos(glm::radians(spot->cutoff_degrees))) + ")";

@@ -23,6 +23,7 @@
 #include <variant>
 
 #include "core/files.hpp"
+#include "core/scale_free.hpp"
 #include "litkit/error.hpp"
 #include "litkit/image.hpp"
 #include "litkit/limits.hpp"
@@ -53,19 +54,19 @@ struct Camera {
     // Turns the observer about `up` through look_at (yaw) and about the
     // horizontal axis (pitch), stopping 5° short of the poles.
     void orbit(float yaw_radians, float pitch_radians) {
-        const glm::vec3 up = glm::normalize(observer.up);
+        const glm::vec3 up = litkit::scale_free::unit(observer.up);
         glm::vec3 offset = observer.position - observer.look_at;
         offset = glm::vec3(glm::rotate(glm::mat4(1.0f), yaw_radians, up) * glm::vec4(offset, 0.0f));
         const glm::vec3 right = glm::cross(up, offset);
-        if (glm::length(right) > 0.0f) {
+        if (right != glm::vec3(0.0f)) {
             const float angle =
-                std::acos(std::clamp(glm::dot(glm::normalize(offset), up), -1.0f, 1.0f));
+                std::acos(std::clamp(glm::dot(litkit::scale_free::unit(offset), up), -1.0f, 1.0f));
             const float limit = glm::radians(5.0f);
             const float pitched =
                 std::clamp(angle - pitch_radians, limit, glm::pi<float>() - limit);
-            offset =
-                glm::vec3(glm::rotate(glm::mat4(1.0f), angle - pitched, glm::normalize(right)) *
-                          glm::vec4(offset, 0.0f));
+            offset = glm::vec3(
+                glm::rotate(glm::mat4(1.0f), angle - pitched, litkit::scale_free::unit(right)) *
+                glm::vec4(offset, 0.0f));
         }
         observer.position = observer.look_at + offset;
     }
@@ -74,8 +75,8 @@ struct Camera {
         observer.position = observer.look_at + offset * std::pow(1.1f, -notches);
     }
     void pan(float right_amount, float up_amount) {
-        const glm::vec3 forward = glm::normalize(observer.look_at - observer.position);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, observer.up));
+        const glm::vec3 forward = litkit::scale_free::unit(observer.look_at - observer.position);
+        const glm::vec3 right = litkit::scale_free::unit(glm::cross(forward, observer.up));
         const glm::vec3 up = glm::cross(right, forward);
         const glm::vec3 move = right * right_amount + up * up_amount;
         observer.position += move;
