@@ -341,18 +341,31 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
     // in float, would find no split either.
     const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
     std::vector<std::uint8_t> pairwise(position_count, 0);
+    std::size_t pairwise_count = 0;
     for (std::size_t t = 0; t < triangle_count; ++t) {
         if (!usable[t]) continue;
         for (const std::uint32_t position : mesh.triangles[t]) {
             const std::uint32_t vertex = vertex_of_position[position];
+            if (pairwise[vertex]) continue;
             const glm::vec3& centre = vertex_normal[vertex];
             if (centre == glm::vec3(0.0f) ||
-                !(double(glm::dot(centre, unit_normals[t])) > half_limit))
+                !(double(glm::dot(centre, unit_normals[t])) > half_limit)) {
                 pairwise[vertex] = 1;
+                ++pairwise_count;
+            }
         }
     }
 
     CreasedNormals result;
+    const auto finish = [&] {
+        result.vertex_of_position = std::move(vertex_of_position);
+        result.vertex_normals = std::move(vertex_normal);
+        result.may_split = std::move(pairwise);
+        return std::move(result);
+    };
+    // Nothing can split anywhere (a smooth mesh: a sphere under any crease
+    // it can have): no corner to list, and no pass over them to find none.
+    if (pairwise_count == 0) return finish();
 
     // The corners at the other vertices, in corner order; an unusable
     // triangle (a sliver between welded corners) takes its corners'
@@ -368,12 +381,6 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
         }
     }
     std::partial_sum(first_corner.begin(), first_corner.end(), first_corner.begin());
-    const auto finish = [&] {
-        result.vertex_of_position = std::move(vertex_of_position);
-        result.vertex_normals = std::move(vertex_normal);
-        result.may_split = std::move(pairwise);
-        return std::move(result);
-    };
     if (first_corner.back() == 0) return finish();
 
     // The usable ones grouped by vertex (a counting sort, keeping triangle

@@ -205,6 +205,18 @@ void split_by_corner_normals(Mesh& mesh, const std::vector<glm::vec3>& normals_o
 // costs one pass more than without).
 void split_at_creases(Mesh& mesh, const CreasedNormals& creased, std::vector<glm::vec3>& normals) {
     normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+    if (creased.split_corners.empty()) {
+        // No vertex may split (creased_normals lists a corner of each that
+        // may): every used position takes its vertex's normal, and no
+        // splitter (two arrays over the positions) is needed.
+        const std::uint32_t* vertex_of = creased.vertex_of_position.data();
+        const glm::vec3* vertex_normal = creased.vertex_normals.data();
+        glm::vec3* out = normals.data();
+        for (const auto& triangle : mesh.triangles)  // positions no triangle uses stay zero
+            for (const std::uint32_t corner : triangle)
+                out[corner] = vertex_normal[vertex_of[corner]];
+        return;
+    }
     for (const auto& triangle : mesh.triangles)  // positions no triangle uses stay zero
         for (const std::uint32_t corner : triangle)
             if (!creased.position_may_split(corner))
