@@ -10,10 +10,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "litkit/error.hpp"
+#include "litkit/export.hpp"
 #include "litkit/image.hpp"
 #include "litkit/scene.hpp"
 #include "picture_agreement.hpp"
@@ -393,6 +396,72 @@ TEST_F(Export, ReportsSceneErrorsLikeRender) {
     EXPECT_EQ(bad.status, 2) << bad.output;
     EXPECT_NE(bad.output.find("bad.toml:2:"), std::string::npos) << bad.output;
     EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// The limit on the numbers of vertex data in main.cpp (docs/reliability.md),
+// at sizes counted by hand: a cube drawn flat is 12 triangles of 3 corners,
+// each corner a position, a normal and a centroid, 12 · 27 = 324 numbers; a
+// square of 4 vertices and 2 triangles drawn smooth is 4 · 6 (position and
+// normal) + 2 · 3 (indices) = 30.
+constexpr const char* flat_cube_scene = R"toml([room]
+width = 10
+height = 10
+depth = 10
+[observer]
+position = [0, 1, 4]
+[lighting]
+reflection = "phong"
+shading = "flat"
+[[lights]]
+type = "point"
+position = [0, 3, 0]
+
+[[objects]]
+name = "box"
+type = "cube"
+)toml";
+
+TEST_F(Export, CppRefusesMoreVertexDataThanItsLimitAtTheObject) {
+    std::ofstream(dir / "cube.toml") << flat_cube_scene;
+    const Outcome refused = cli("export --format cpp cube.toml -o out --max-source-numbers 323");
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_NE(refused.output.find("cube.toml:14:1: error: objects[0] 'box': the C++ export would "
+                                  "write at least 324 numbers of vertex data into main.cpp (this "
+                                  "object: 12 triangles), more than its limit of 323"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    const Outcome written = cli("export --format cpp cube.toml -o out --max-source-numbers 324");
+    EXPECT_EQ(written.status, 0) << written.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "main.cpp"));
+}
+
+TEST_F(Export, CppCountsAMeshFilesVertexDataOnceRead) {
+    // A mesh file's size is known once it is read: the exact count, 30.
+    std::ofstream(dir / "square.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+    std::string text = flat_cube_scene;
+    text.replace(text.find("flat"), 4, "phong");
+    text.replace(text.find("type = \"cube\""), 13, "type = \"mesh\"\nfile = \"square.obj\"");
+    std::ofstream(dir / "square.toml") << text;
+    const fs::path scene_file = dir / "square.toml";
+    const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
+    litkit::ExportOptions options;
+    options.max_source_numbers = 29;
+    try {
+        litkit::export_cpp(scene, dir / "out", "square", "square.toml", options);
+        ADD_FAILURE() << "exported past the limit";
+    } catch (const litkit::SceneError& error) {
+        ASSERT_EQ(error.diagnostics().size(), 1u);
+        EXPECT_EQ(error.diagnostics()[0].location.line, 14u);
+        EXPECT_NE(error.diagnostics()[0].message.find(
+                      "would write 30 numbers of vertex data into main.cpp (this object: 2 "
+                      "triangles), more than its limit of 29"),
+                  std::string::npos)
+            << error.diagnostics()[0].message;
+    }
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    options.max_source_numbers = 30;
+    EXPECT_EQ(litkit::export_cpp(scene, dir / "out", "square", "square.toml", options).size(), 2u);
 }
 
 TEST_F(Export, GlBackendRendersThroughTheCli) {

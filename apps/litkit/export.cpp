@@ -1,5 +1,6 @@
 // litkit export: the scene as GLSL shaders, or as a C++ program that draws it
 // with OpenGL.
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -24,6 +25,7 @@ struct ExportArguments {
     std::string name;
     bool yes = false;
     bool force = false;
+    std::uint64_t max_source_numbers = litkit::default_max_source_numbers;
 };
 
 // "my scene.toml" → "my_scene"; the default scene → "default_scene".
@@ -44,7 +46,8 @@ int run_export(const ExportArguments& arguments) {
     settle_missing_lighting(scene, arguments.yes);
     const litkit::ExportOptions options{
         .replace_existing = arguments.force,
-        .inputs = {arguments.scene.scenes.begin(), arguments.scene.scenes.end()}};
+        .inputs = {arguments.scene.scenes.begin(), arguments.scene.scenes.end()},
+        .max_source_numbers = arguments.max_source_numbers};
     const fs::path directory = arguments.directory;
     std::vector<fs::path> written;
     std::string program;
@@ -94,6 +97,11 @@ Command add_export(CLI::App& app, const DefinesOptions& defines) {
             "-y,--yes", arguments->yes,
             "Use the default models (phong / phong) where [lighting] leaves one out");
         export_command->add_flag("-f,--force", arguments->force, "Replace files that exist");
+        export_command
+            ->add_option("--max-source-numbers", arguments->max_source_numbers,
+                         "cpp: the most numbers of vertex data main.cpp may hold")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
     }
     return {.app = export_command, .run = [arguments] { return run_export(*arguments); }};
 }

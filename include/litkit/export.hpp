@@ -4,6 +4,7 @@
 /// `litkit render --backend gl` draws.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +13,11 @@
 #include "litkit/scene.hpp"
 
 namespace litkit {
+
+/// The most numbers of vertex data export_cpp writes into main.cpp by
+/// default (ExportOptions::max_source_numbers): about 45 MB of source, which
+/// g++ 12 builds at -O2 in about a minute with about 1.3 GB of memory.
+inline constexpr std::uint64_t default_max_source_numbers = 4'000'000;
 
 /// How export_glsl and export_cpp write.
 struct ExportOptions {
@@ -26,6 +32,13 @@ struct ExportOptions {
     /// added by the export itself): an export never writes over one of them,
     /// --force or not (ArgumentError).
     std::vector<std::filesystem::path> inputs;
+    /// export_cpp: the most numbers of vertex data (positions, normals,
+    /// centroids, indices: 27 a triangle drawn flat, 6 a vertex and 3 a
+    /// triangle otherwise) that main.cpp may hold, all objects together. Past
+    /// it the export writes nothing and throws SceneError located at the
+    /// object that crosses it, naming the limit; built-in shapes are sized
+    /// from their parameters before any mesh is built (docs/reliability.md).
+    std::uint64_t max_source_numbers = default_max_source_numbers;
 };
 
 /// Writes, into `directory` (created if missing), a vertex and a fragment
@@ -44,9 +57,10 @@ std::vector<std::filesystem::path> export_glsl(const Scene& scene,
 /// OpenGL 3.3 on a headless EGL context and writes a PNG, or shows it in a
 /// window with --window (built where SDL2 is found). `scene_label` names the
 /// scene in the program's comments. Returns the paths written; throws IoError
-/// (also for an unreadable mesh file) or ArgumentError for a bad
+/// (also for an unreadable mesh file), ArgumentError for a bad
 /// program name or a scene where some object's transmission is above 0
-/// (refraction, docs/spec.md §10, is not exported yet).
+/// (refraction, docs/spec.md §10, is not exported yet), and SceneError when
+/// the objects' vertex data would exceed options.max_source_numbers.
 std::vector<std::filesystem::path> export_cpp(const Scene& scene,
                                               const std::filesystem::path& directory,
                                               const std::string& program_name,

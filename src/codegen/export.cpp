@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iterator>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "core/files.hpp"
 #include "litkit/error.hpp"
 #include "litkit/glsl.hpp"
+#include "litkit/validate.hpp"
 #include "scene/float_range.hpp"
 #include "scene/transparency.hpp"
 
@@ -217,13 +219,67 @@ struct GeometrySource {
     std::string objects;  // the ObjectData table's rows
 };
 
-GeometrySource geometry_source(const Scene& scene, const ObjectModels& models) {
+// 16777216 → "16,777,216".
+std::string grouped(std::uint64_t value) {
+    const std::string digits = std::to_string(value);
+    std::string text;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) text += ',';
+        text += digits[i];
+    }
+    return text;
+}
+
+// main.cpp holds every object's vertex data as numbers in the source, and a
+// compiler needs hundreds of bytes of memory for each (docs/reliability.md):
+// the error when object i brings them to `numbers`, past the limit.
+[[noreturn]] void too_many_numbers(const Scene& scene, std::size_t i, std::uint64_t triangles,
+                                   std::uint64_t numbers, bool at_least,
+                                   const ExportOptions& options) {
+    const SceneObject& object = scene.objects[i];
+    std::string who = "objects[" + std::to_string(i) + "]";
+    if (!object.name.empty()) who += " '" + object.name + "'";
+    throw SceneError({Diagnostic{
+        scene.location_of("objects[" + std::to_string(i) + "]"), Severity::Error,
+        who + ": the C++ export would write " + (at_least ? "at least " : "") + grouped(numbers) +
+            " numbers of vertex data into main.cpp (this object: " + grouped(triangles) +
+            " triangles), more than its limit of " + grouped(options.max_source_numbers) +
+            " (a compiler needs hundreds of bytes for each); lower the tessellation, or draw it "
+            "with `litkit render --backend gl` (docs/reliability.md)"}});
+}
+
+// Object i's numbers in main.cpp when drawn flat or not, from its triangles
+// and vertices.
+std::uint64_t source_numbers(bool flat, std::uint64_t triangles, std::uint64_t vertices) {
+    return flat ? 27 * triangles : 6 * vertices + 3 * triangles;
+}
+
+// Before any mesh is built: each built-in shape's triangles from its
+// parameters (no vertices counted, so a lower bound), all objects together.
+void check_source_size_from_parameters(const Scene& scene, const ObjectModels& models,
+                                       const ExportOptions& options) {
+    std::uint64_t total = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
+        const std::uint64_t triangles = triangles_of(scene.objects[i].shape);
+        total += source_numbers(pair.second == Shading::Flat, triangles, 0);
+        if (total > options.max_source_numbers)
+            too_many_numbers(scene, i, triangles, total, true, options);
+    }
+}
+
+GeometrySource geometry_source(const Scene& scene, const ObjectModels& models,
+                               const ExportOptions& options) {
     GeometrySource out;
+    std::uint64_t total_numbers = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
         const detail::GlObject gl =
             detail::gl_object(object, pair.first, pair.second, normal_options(scene, object));
+        total_numbers += gl.vertices.size() + gl.indices.size();
+        if (total_numbers > options.max_source_numbers)
+            too_many_numbers(scene, i, gl.triangles, total_numbers, false, options);
         const std::string id = "object" + std::to_string(i);
         const std::string label = (object.name.empty() ? std::string(shape_type_name(object.shape))
                                                        : printable(object.name));
@@ -373,7 +429,9 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
         throw ArgumentError("program name '" + program_name +
                             "' is a target name CMake keeps for itself; choose another");
     const ObjectModels models = object_models(scene, options);
-    const GeometrySource geometry = geometry_source(scene, models);  // reads mesh files first
+    check_source_size_from_parameters(scene, models, options);
+    const GeometrySource geometry =
+        geometry_source(scene, models, options);  // reads mesh files first
 
     const Observer& o = scene.observer;
     const Rgb8 bg = to_rgb8(scene.output.background);
