@@ -232,9 +232,10 @@ int angle_weights_of_two(const Mesh& mesh, std::size_t t, glm::vec3* out, glm::v
     const __m128d f2[3] = {minus(0, 1, 0), minus(0, 1, 1), minus(0, 1, 2)};
     const __m128d angle0 = corner_angles(length, dot(e1, e2));
     const __m128d angle1 = corner_angles(length, dot(f1, f2));
-    // std::max(0.0, v) is (0 < v ? v : 0), as maxpd(v, 0) (−0 included).
-    const __m128d angle2 = _mm_max_pd(
-        _mm_sub_pd(_mm_sub_pd(_mm_set1_pd(std::numbers::pi), angle0), angle1), _mm_setzero_pd());
+    // std::max(0.0, v): (0 < v ? v : 0), −0 included, written as that
+    // comparison (maxpd's rule for −0 is not every SSE2 emulation's).
+    const __m128d rest = _mm_sub_pd(_mm_sub_pd(_mm_set1_pd(std::numbers::pi), angle0), angle1);
+    const __m128d angle2 = select(_mm_cmplt_pd(_mm_setzero_pd(), rest), rest, _mm_setzero_pd());
     const __m128d angles[3] = {angle0, angle1, angle2};
     alignas(16) double lengths[2], units[3][2], weights[3][3][2];  // [corner][axis][lane]
     _mm_store_pd(lengths, length);
