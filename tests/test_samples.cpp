@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "litkit/error.hpp"
+#include "litkit/explain.hpp"
 #include "litkit/export.hpp"
 #include "litkit/render.hpp"
 #include "litkit/scene.hpp"
@@ -153,6 +154,55 @@ TEST(Supersampling, HalfCoveredPixelIsComputedByHand) {
     EXPECT_EQ(one.pixel(10, 5)[0], 255);
     EXPECT_EQ(one.pixel(9, 5)[0], 0);
     EXPECT_EQ(one.pixel(11, 5)[0], 255);
+}
+
+// explain lists the half-covered pixel's samples by hand: the two left of
+// its centre (x = 0.375 and 0.125, samples 0 and 2 of the table) see the
+// cube, black; the others the white background, L = 1^γ = 1; the mean is
+// 0.5 and the pixel 128.
+TEST(Supersampling, ExplainListsEverySample) {
+    const Scene scene = half_covered_pixel_scene(4, 1.0f);
+    const PixelExplanation e = explain_pixel(scene, 10, 5);
+    ASSERT_EQ(e.samples.size(), 4u);
+    const bool sees_cube[] = {true, false, true, false};
+    const float xs[] = {0.375f, 0.875f, 0.125f, 0.625f};
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(e.samples[k].position.x, xs[k]);
+        EXPECT_EQ(e.samples[k].hit, sees_cube[k]) << k;
+        EXPECT_EQ(e.samples[k].light, glm::vec3(sees_cube[k] ? 0.0f : 1.0f)) << k;
+    }
+    EXPECT_EQ(e.rgb, (Rgb8{128, 128, 128}));
+    const std::string text = explanation_text(e, scene);
+    EXPECT_NE(text.find("sample 1 at (0.875, 0.375): background, L = (1, 1, 1)"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("mean = (0.5, 0.5, 0.5)\nrgb = round(255 * that) = (128, 128, 128)"),
+              std::string::npos)
+        << text;
+    const std::string json = explanation_json(e, scene);
+    EXPECT_NE(json.find("\"mean\": [0.5, 0.5, 0.5]"), std::string::npos) << json;
+    // With one sample there is no list.
+    EXPECT_TRUE(explain_pixel(half_covered_pixel_scene(1, 1.0f), 10, 5).samples.empty());
+}
+
+// Renderer::probe's pixel is the rendered one, samples or not, on every
+// pixel of a row across the cube's edges.
+TEST(Supersampling, ProbeGivesTheRenderedPixel) {
+    Scene scene = default_scene();
+    scene.output.width = 80;
+    scene.output.height = 60;
+    for (int samples : {1, 8}) {
+        scene.output.samples = samples;
+        Renderer renderer(scene);
+        const Image image = renderer.render();
+        for (int x = 0; x < 80; ++x) {
+            const PixelProbe probe = renderer.probe(x, 30);
+            const std::uint8_t* want = image.pixel(x, 30);
+            EXPECT_EQ(probe.rgb, (Rgb8{want[0], want[1], want[2]})) << x << ", " << samples;
+            EXPECT_EQ(probe.samples.size(), samples > 1 ? 8u : 0u);
+        }
+        // The renderer still draws its samples after probing.
+        EXPECT_EQ(renderer.render().rgb, image.rgb);
+    }
 }
 
 // A pixel whose samples all see one flat-shaded face is that face's colour,

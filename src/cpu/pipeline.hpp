@@ -247,8 +247,11 @@ struct Pipeline {
     LitRow light_row(int y, int width, BandScratch& scratch, const SamplePass& pass) const;
     void record_probe(const BandScratch& scratch, std::size_t i, int x,
                       const SamplePass& pass) const;
-    // samples.cpp: one band with several samples per pixel.
+    // samples.cpp: one band with several samples per pixel, and the probed
+    // pixel's sample of one pass (PixelProbe::samples).
     void draw_band_samples(int band, BandScratch& scratch, Image& image) const;
+    void record_sample(const BandScratch& scratch, std::size_t offset, const LitRow& lit,
+                       const SamplePass& pass) const;
     // glass.cpp: the row's pixels that see glass, their local part and the
     // ray tree's light in place of what light_row gave them.
     void refract_row(int y, int width, int begin, int end, BandScratch& scratch,

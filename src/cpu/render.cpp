@@ -185,9 +185,22 @@ PixelProbe Renderer::probe(int x, int y) {
     impl_->probe_x = x;
     impl_->probe_y = y;
     Image image;
+    const int samples = output.samples;
     try {
         render_into(image);
+        if (samples > 1) {
+            // The pixel from its samples (recorded above); then the rest of
+            // the record at its centre, as one sample per pixel draws it.
+            std::vector<SampleProbe> recorded = std::move(impl_->probed.samples);
+            impl_->probed = PixelProbe{};
+            impl_->probed.samples = std::move(recorded);
+            impl_->scene.output.samples = 1;
+            Image centre;
+            render_into(centre);
+            impl_->scene.output.samples = samples;
+        }
     } catch (...) {
+        impl_->scene.output.samples = samples;
         impl_->probe_x = impl_->probe_y = -1;
         throw;
     }

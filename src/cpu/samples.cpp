@@ -88,6 +88,23 @@ void accumulate_row(const kernels::Kernels& kernels, BandScratch& s, std::size_t
 
 }  // namespace
 
+void Pipeline::record_sample(const BandScratch& s, std::size_t offset, const LitRow& lit,
+                             const SamplePass& pass) const {
+    SampleProbe sample;
+    sample.position = pass.position;
+    const std::size_t x = static_cast<std::size_t>(probe_x);
+    const ShadeTriangle* tri =
+        probe_x >= lit.begin && probe_x < lit.end ? s.visible[offset + x] : nullptr;
+    if (tri) {
+        sample.hit = true;
+        sample.object = tri->object;
+        sample.light = {clamped(s.r[x]), clamped(s.g[x]), clamped(s.b[x])};
+    } else {
+        sample.light = {background_light[0], background_light[1], background_light[2]};
+    }
+    probed.samples.push_back(sample);
+}
+
 void Pipeline::draw_band_samples(int band, BandScratch& s, Image& image) const {
     const int width = image.width;
     const int row_begin = band * band_height;
@@ -105,6 +122,7 @@ void Pipeline::draw_band_samples(int band, BandScratch& s, Image& image) const {
         for (int y = row_begin; y < row_end; ++y) {
             const std::size_t offset = static_cast<std::size_t>(y % band_height) * width;
             const LitRow lit = light_row(y, width, s, pass);
+            if (y == probe_y) record_sample(s, offset, lit, pass);
             accumulate_row(kernels, s, offset, lit, static_cast<int>(k), columns[y % band_height]);
             clear_row(s, offset, lit.begin, lit.end);
         }
