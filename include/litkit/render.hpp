@@ -43,10 +43,6 @@ struct RenderOptions {
     Kernels kernels = Kernels::Best;
 };
 
-/// What the renderer computed at one pixel (litkit explain): the triangle it
-/// shows, the perspective-correct weights of its corners, the values the
-/// fragment stage interpolated from them, the colour before clamping and the
-/// pixel written.
 /// One sample of a pixel with several (docs/spec.md §11), as the renderer
 /// shaded it.
 struct SampleProbe {
@@ -57,6 +53,10 @@ struct SampleProbe {
     glm::vec3 light{0.0f};
 };
 
+/// What the renderer computed at one pixel (litkit explain): the triangle it
+/// shows, the perspective-correct weights of its corners, the values the
+/// fragment stage interpolated from them, the colour before clamping and the
+/// pixel written.
 struct PixelProbe {
     bool hit = false;                         ///< false: the background
     std::size_t object = 0;                   ///< index into Scene::objects

@@ -15,7 +15,8 @@ namespace litkit {
 
 /// A sample's place within its pixel, each coordinate in [0, 1).
 struct SamplePosition {
-    float x, y;
+    float x;  ///< from the pixel's left edge
+    float y;  ///< from the pixel's top edge (y down)
 };
 
 /// The default of OutputSettings::samples: one sample, at the centre.
