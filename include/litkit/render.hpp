@@ -135,7 +135,8 @@ class Renderer {
     /// The set of per-pixel kernels in use: "avx512", "avx2" or "portable".
     const char* kernel_set() const;
     /// Pixels the last frame covered, each shaded once (hidden ones are not;
-    /// after probe(), those of the pixel's band).
+    /// after probe(), those of the pixel's band); with several samples per
+    /// pixel, the samples that saw an object.
     std::size_t shaded_pixel_count() const;
     /// Rays the last frame cast from the surfaces of glass (docs/spec.md
     /// §10: the pixels' own rays are not cast, the rasterizer finds their
