@@ -20,7 +20,7 @@ set(LITKIT_LAYER_SOURCES_trace
     trace/accel.cpp trace/bvh_build.cpp trace/ray_tree.cpp)
 set(LITKIT_LAYER_SOURCES_cpu
     cpu/clip.cpp cpu/fragment.cpp cpu/glass.cpp cpu/prepare.cpp cpu/rasterize.cpp cpu/render.cpp
-    cpu/setup.cpp
+    cpu/samples.cpp cpu/setup.cpp
     cpu/shade_kernel.cpp cpu/shade_kernel_avx2.cpp cpu/shade_kernel_avx512.cpp
     cpu/shade_kernel_portable.cpp cpu/vertex.cpp)
 # codegen also compiles embedded_text.cpp, generated in the build tree.

@@ -15,6 +15,7 @@
 // of src/trace/ or litkit/refraction.hpp is used.
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -101,20 +102,43 @@ class Tracer {
         up_ = glm::cross(right_, forward_);
     }
 
-    // The §1 ray through (i + 0.5, j + 0.5), scaled so that its component
-    // along the view direction is 1 (its parameter is the view depth).
-    dvec3 camera_ray(int i, int j) const {
+    // The §1 ray through (i + sx, j + sy) (the centre by default; a sample
+    // of §11 otherwise), scaled so that its component along the view
+    // direction is 1 (its parameter is the view depth).
+    dvec3 camera_ray(int i, int j, double sx = 0.5, double sy = 0.5) const {
         const int width = scene_.output.width, height = scene_.output.height;
         const double tan_half = std::tan(double(scene_.observer.fov_degrees) * pi / 360.0);
         const double aspect = double(width) / double(height);
-        const double x = 2.0 * (i + 0.5) / width - 1.0;
-        const double y = 1.0 - 2.0 * (j + 0.5) / height;
+        const double x = 2.0 * (i + sx) / width - 1.0;
+        const double y = 1.0 - 2.0 * (j + sy) / height;
         return x * tan_half * aspect * right_ + y * tan_half * up_ + forward_;
     }
 
-    PixelResult pixel(int i, int j) const {
+    // Pixel (i, j) with the scene's samples (§11): the mean of the samples'
+    // clamped light, then gamma; `light` is that mean, `object` the first
+    // sample's.
+    PixelResult supersampled(int i, int j) const {
         PixelResult result;
-        const dvec3 ray = camera_ray(i, j);
+        const auto pattern = litkit::sample_pattern(scene_.output.samples);
+        bool first = true;
+        for (const litkit::SamplePosition& sample : pattern) {
+            const PixelResult one = pixel(i, j, sample.x, sample.y);
+            if (first) result.object = one.object;
+            first = false;
+            result.rays += one.rays;
+            const dvec3 light = one.object < 0 ? background_ : glm::clamp(one.light, 0.0, 1.0);
+            result.light += light / double(pattern.size());
+        }
+        const double gamma = scene_.output.gamma;
+        for (int c = 0; c < 3; ++c)
+            result.rgb[c] = static_cast<std::uint8_t>(
+                std::lround(255.0 * std::pow(result.light[c], 1.0 / gamma)));
+        return result;
+    }
+
+    PixelResult pixel(int i, int j, double sx = 0.5, double sy = 0.5) const {
+        PixelResult result;
+        const dvec3 ray = camera_ray(i, j, sx, sy);
         const Hit hit =
             nearest(eye_, ray, -1, double(scene_.observer.near), double(scene_.observer.far));
         if (!hit.found()) {

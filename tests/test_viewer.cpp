@@ -302,6 +302,23 @@ TEST_F(Viewer, ShowsTheRenderPixelForPixelAndSwitchesModelsAtAKey) {
     EXPECT_EQ(wait_exit(), 0);
 }
 
+// Anti-aliasing (docs/spec.md §11): A cycles 1, 4, 8, 16 samples; at rest
+// the window is `litkit render --samples N`'s picture, and --samples starts
+// it there.
+TEST_F(Viewer, AKeyCyclesSamplesAndTheWindowEqualsRender) {
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui --samples 4"));
+    EXPECT_LE(wait_for(rendered("--samples 4")), 1) << "at start";
+    EXPECT_GT(largest_difference(screenshot(), rendered("")), 1) << "4 samples are not 1";
+    const std::pair<const char*, const char*> presses[] = {
+        {"8", "--samples 8"}, {"16", "--samples 16"}, {"1", ""}, {"4", "--samples 4"}};
+    for (const auto& [now, options] : presses) {
+        key("a");
+        EXPECT_LE(wait_for(rendered(options)), 1) << "A to " << now << " samples";
+    }
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
 TEST_F(Viewer, OrbitMovesTheCameraAndRPutsItBack) {
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui"));
     const litkit::Image start_picture = rendered("");

@@ -52,9 +52,14 @@ int run_bench(const BenchArguments& arguments) {
                 renderer.triangle_count());
     std::printf("setup: %.3f ms (%s)\n", setup_ms, std::string(renderer.setup_steps()).c_str());
     if (const auto shaded = renderer.shaded_pixel_count()) {
-        std::printf("pixels shaded: %zu per frame (%.1f%% of the image)\n", *shaded,
-                    100.0 * static_cast<double>(*shaded) /
-                        (static_cast<double>(image.width) * image.height));
+        const int samples = scene.output.samples;
+        const double share = 100.0 * static_cast<double>(*shaded) /
+                             (static_cast<double>(image.width) * image.height * samples);
+        if (samples == 1)
+            std::printf("pixels shaded: %zu per frame (%.1f%% of the image)\n", *shaded, share);
+        else
+            std::printf("samples shaded: %zu per frame (%.1f%% of the image's %d per pixel)\n",
+                        *shaded, share, samples);
     }
     std::printf("frames: %d, median %.3f ms, min %.3f ms\n", arguments.frames, median,
                 frame_ms.front());

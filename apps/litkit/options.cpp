@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <array>
+#include <charconv>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -92,6 +94,20 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
                      "included (docs/spec.md §10)")
         ->check(CLI::Range(litkit::min_max_depth, litkit::max_max_depth));
     command
+        ->add_option("--samples", arguments.samples,
+                     "Samples per pixel, 1, 4, 8 or 16: anti-aliasing (docs/spec.md §11)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                int samples = 0;
+                const auto [end, error] =
+                    std::from_chars(text.data(), text.data() + text.size(), samples);
+                return error == std::errc() && end == text.data() + text.size() &&
+                               litkit::valid_sample_count(samples)
+                           ? std::string()
+                           : "samples must be 1, 4, 8 or 16, found " + text;
+            },
+            "1|4|8|16"));
+    command
         ->add_option("--threads", arguments.threads, "Threads of the CPU backend (0: one per core)")
         ->check(CLI::Range(0, litkit::max_render_threads));
     // litkit::backends(): every backend with what it is.
@@ -125,6 +141,7 @@ litkit::Scene load(const SceneArguments& arguments) {
     if (arguments.normals) scene.normals = litkit::parse_normals(*arguments.normals);
     if (arguments.crease_angle) scene.crease_angle_degrees = *arguments.crease_angle;
     if (arguments.max_depth) scene.max_depth = *arguments.max_depth;
+    if (arguments.samples) scene.output.samples = *arguments.samples;
     if (scene.normals == litkit::Normals::File && arguments.normals) {
         // docs/spec.md §9.2: `--normals file` asks every mesh file for a
         // normal at each face corner; validating again reports one that

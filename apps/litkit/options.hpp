@@ -25,6 +25,7 @@ struct SceneArguments {
     std::optional<std::string> normals;
     std::optional<float> crease_angle;
     std::optional<int> max_depth;  // docs/spec.md §10.2 item 9; replaces [lighting] max_depth
+    std::optional<int> samples;    // docs/spec.md §11; replaces [output] samples
     std::optional<int> threads;    // CPU backend only; none: one per core
     std::string backend = "cpu";   // a name of litkit::backends(); backend_id() reads it
     std::uint64_t max_triangles = litkit::default_triangle_budget;  // docs/reliability.md

@@ -63,6 +63,10 @@ struct PixelExplanation {
     /// the pixel's L. Empty for an opaque object; `evaluations` then hold
     /// all of `sum`, and here the local lighting at the first hit (its I).
     std::vector<RayNode> ray_tree;
+    /// With several samples per pixel (docs/spec.md §11): each sample's L_k,
+    /// whose mean, after gamma, is `rgb`; everything else here is then the
+    /// pixel's centre, lit as one sample would be. Empty with one sample.
+    std::vector<SampleProbe> samples;
 };
 
 /// Renders the scene (CPU backend) and explains pixel (x, y). Objects' and

@@ -20,6 +20,7 @@
 #include "litkit/ray_tree.hpp"
 #include "litkit/refraction.hpp"
 #include "litkit/render.hpp"
+#include "litkit/samples.hpp"
 #include "litkit/scene.hpp"
 #include "litkit/shapes.hpp"
 #include "litkit/turntable.hpp"

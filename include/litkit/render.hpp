@@ -43,6 +43,16 @@ struct RenderOptions {
     Kernels kernels = Kernels::Best;
 };
 
+/// One sample of a pixel with several (docs/spec.md §11), as the renderer
+/// shaded it.
+struct SampleProbe {
+    SamplePosition position{0.5f, 0.5f};  ///< within the pixel (litkit/samples.hpp)
+    bool hit = false;                     ///< false: the background
+    std::size_t object = 0;               ///< index into Scene::objects, when hit
+    /// L_k: the sample's light clamped to [0, 1], or (background)^γ.
+    glm::vec3 light{0.0f};
+};
+
 /// What the renderer computed at one pixel (litkit explain): the triangle it
 /// shows, the perspective-correct weights of its corners, the values the
 /// fragment stage interpolated from them, the colour before clamping and the
@@ -62,6 +72,11 @@ struct PixelProbe {
     /// The pixel's ray tree where its first surface is glass (t > 0,
     /// docs/spec.md §10.2), its first node the camera's ray; else empty.
     std::vector<RayNode> ray_tree;
+    /// With several samples per pixel: each sample, in the order of
+    /// docs/spec.md §11's table, whose mean gives `rgb`; every field above
+    /// but `rgb` then describes the pixel's centre, as one sample would.
+    /// Empty with one sample.
+    std::vector<SampleProbe> samples;
 };
 
 /// Whether this CPU runs the given set of per-pixel kernels.
@@ -120,7 +135,8 @@ class Renderer {
     /// The set of per-pixel kernels in use: "avx512", "avx2" or "portable".
     const char* kernel_set() const;
     /// Pixels the last frame covered, each shaded once (hidden ones are not;
-    /// after probe(), those of the pixel's band).
+    /// after probe(), those of the pixel's band); with several samples per
+    /// pixel, the samples that saw an object.
     std::size_t shaded_pixel_count() const;
     /// Rays the last frame cast from the surfaces of glass (docs/spec.md
     /// §10: the pixels' own rays are not cast, the rasterizer finds their

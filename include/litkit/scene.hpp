@@ -24,6 +24,7 @@
 #include "litkit/lighting.hpp"
 #include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
+#include "litkit/samples.hpp"
 
 namespace litkit {
 
@@ -78,6 +79,11 @@ struct OutputSettings {
     /// The gamma of docs/spec.md §4.5 (> 0; 1: no correction): a covered
     /// pixel is round(255 · clamp(I, 0, 1)^(1/gamma)) per channel.
     float gamma = 1.0f;
+    /// Samples per pixel (docs/spec.md §11, anti-aliasing): 1, 4, 8 or 16
+    /// (litkit/samples.hpp). Each sample is shaded as a pixel centre would
+    /// be; the pixel is the mean of the samples' clamped intensities, then
+    /// gamma. 1 (the default) is one sample at the pixel's centre.
+    int samples = 1;
 };
 
 /// A cube centred at its origin (make_cube).

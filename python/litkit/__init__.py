@@ -125,19 +125,21 @@ def check(*scene):
 
 
 def render(scene=None, *, reflection=None, shading=None, width=None, height=None,
-           max_depth=None, threads=0):
+           max_depth=None, samples=None, threads=0):
     """Renders ``scene`` (default: the built-in default scene) on the CPU and
     returns the picture as a litkit.Image, an (height, width, 3) uint8 NumPy
     array, equal to the PNG ``litkit render`` writes. ``reflection``,
-    ``shading``, ``width``, ``height`` and ``max_depth`` (1-16, the ray paths'
-    length through glass, as ``--max-depth``) replace the scene's own; a scene
+    ``shading``, ``width``, ``height``, ``max_depth`` (1-16, the ray paths'
+    length through glass, as ``--max-depth``) and ``samples`` (1, 4, 8 or 16
+    per pixel: anti-aliasing, as ``--samples``) replace the scene's own; a scene
     without [lighting] uses phong / phong. ``threads``: 0 is one per hardware
     thread. The scene is checked first (it may have been changed in Python).
     Releases the GIL while it works."""
     if scene is None:
         scene = default_scene()
     pixels = _litkit._render(scene, reflection=reflection, shading=shading, width=width,
-                             height=height, max_depth=max_depth, threads=threads)
+                             height=height, max_depth=max_depth, samples=samples,
+                             threads=threads)
     return pixels.view(Image)
 
 
@@ -156,11 +158,12 @@ class Renderer:
                                            threads=threads)
 
     def render(self, scene=None, *, reflection=None, shading=None, width=None, height=None,
-               max_depth=None):
+               max_depth=None, samples=None):
         """Draws the scene given (checked, and kept for the next frames) or the
         last one; the keyword arguments apply to this picture only."""
         pixels = self._prepared.render(scene, reflection=reflection, shading=shading,
-                                       width=width, height=height, max_depth=max_depth)
+                                       width=width, height=height, max_depth=max_depth,
+                                       samples=samples)
         return pixels.view(Image)
 
     @property
@@ -197,7 +200,10 @@ class Explanation:
     ``n2``, ``theta1``, ``theta2``, ``k``, ``fresnel``,
     ``total_internal_reflection``, ``weight``, ``local``, ``contribution``,
     ``radiance``, ...; docs/learning.md); the contributions add up to ``sum``.
-    Empty for an opaque object.
+    Empty for an opaque object. ``samples``: with several samples per pixel,
+    one dict per sample (``position`` in the pixel, ``hit``, ``object_index``,
+    ``light``: its L clamped to [0, 1]), whose mean after gamma is ``rgb``;
+    the other fields then describe the pixel's centre. Empty with one sample.
     """
 
     def __init__(self, fields):
@@ -211,14 +217,14 @@ class Explanation:
                 f"{len(self.ray_tree)} rays>")
 
 
-def explain(scene=None, x=0, y=0, *, reflection=None, shading=None, threads=0):
+def explain(scene=None, x=0, y=0, *, reflection=None, shading=None, samples=None, threads=0):
     """Explains pixel (``x``, ``y``) of ``render(scene, reflection=...,
-    shading=...)`` (default scene: the built-in one) and returns an
-    Explanation. Raises ArgumentError for a pixel outside the image."""
+    shading=..., samples=...)`` (default scene: the built-in one) and returns
+    an Explanation. Raises ArgumentError for a pixel outside the image."""
     if scene is None:
         scene = default_scene()
     return Explanation(_litkit._explain(scene, x, y, reflection=reflection, shading=shading,
-                                        threads=threads))
+                                        samples=samples, threads=threads))
 
 
 def _scene_to_dict(self):

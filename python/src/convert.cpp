@@ -58,6 +58,12 @@ void Overrides::apply_to(litkit::Scene& scene) const {
                 std::to_string(litkit::max_max_depth) + ", found " + std::to_string(*max_depth));
         scene.max_depth = *max_depth;
     }
+    if (samples) {
+        if (!litkit::valid_sample_count(*samples))
+            throw litkit::ArgumentError("samples must be 1, 4, 8 or 16, found " +
+                                        std::to_string(*samples));
+        scene.output.samples = *samples;
+    }
 }
 
 int checked_threads(int threads) {

@@ -66,8 +66,9 @@ struct Overrides {
     std::optional<int> width;
     std::optional<int> height;
     std::optional<int> max_depth;
-    // Throws litkit::ArgumentError for an unknown name, a size or a max_depth
-    // out of range.
+    std::optional<int> samples;  // docs/spec.md §11: 1, 4, 8 or 16
+    // Throws litkit::ArgumentError for an unknown name, a size, a max_depth
+    // out of range or a count of samples not allowed.
     void apply_to(litkit::Scene& scene) const;
 };
 int checked_threads(int threads);

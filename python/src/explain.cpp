@@ -106,6 +106,16 @@ py::dict explain(const litkit::Scene& scene, int x, int y, const Overrides& over
     for (std::size_t i = 0; i < e.ray_tree.size(); ++i)
         tree.append(node_dict(e.ray_tree[i], i, copy));
     d["ray_tree"] = tree;
+    py::list samples;
+    for (const litkit::SampleProbe& sample : e.samples) {
+        py::dict s;
+        s["position"] = py::make_tuple(sample.position.x, sample.position.y);
+        s["hit"] = sample.hit;
+        s["object_index"] = sample.hit ? py::object(py::int_(sample.object)) : py::none();
+        s["light"] = sample.light;
+        samples.append(s);
+    }
+    d["samples"] = samples;
     d["text"] = text;
     return d;
 }
@@ -116,13 +126,14 @@ void bind_explain(py::module_& module) {
     module.def(
         "_explain",
         [](const litkit::Scene& scene, int x, int y, std::optional<std::string> reflection,
-           std::optional<std::string> shading, int threads) {
-            return explain(scene, x, y,
-                           Overrides{std::move(reflection), std::move(shading), {}, {}}, threads);
+           std::optional<std::string> shading, std::optional<int> samples, int threads) {
+            Overrides overrides{std::move(reflection), std::move(shading), {}, {}};
+            overrides.samples = samples;
+            return explain(scene, x, y, overrides, threads);
         },
         py::arg("scene"), py::arg("x"), py::arg("y"), py::kw_only(),
         py::arg("reflection") = py::none(), py::arg("shading") = py::none(),
-        py::arg("threads") = 0);
+        py::arg("samples") = py::none(), py::arg("threads") = 0);
 }
 
 }  // namespace litkit_python

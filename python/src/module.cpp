@@ -95,8 +95,8 @@ class PreparedScene {
 
 Overrides overrides(std::optional<std::string> reflection, std::optional<std::string> shading,
                     std::optional<int> width, std::optional<int> height,
-                    std::optional<int> max_depth) {
-    return Overrides{std::move(reflection), std::move(shading), width, height, max_depth};
+                    std::optional<int> max_depth, std::optional<int> samples) {
+    return Overrides{std::move(reflection), std::move(shading), width, height, max_depth, samples};
 }
 
 }  // namespace
@@ -106,13 +106,14 @@ void bind_render(py::module_& module) {
         "_render",
         [](const litkit::Scene& scene, std::optional<std::string> reflection,
            std::optional<std::string> shading, std::optional<int> width, std::optional<int> height,
-           std::optional<int> max_depth, int threads) {
-            return render_once(scene, overrides(reflection, shading, width, height, max_depth),
-                               threads);
+           std::optional<int> max_depth, std::optional<int> samples, int threads) {
+            return render_once(
+                scene, overrides(reflection, shading, width, height, max_depth, samples), threads);
         },
         py::arg("scene"), py::kw_only(), py::arg("reflection") = py::none(),
         py::arg("shading") = py::none(), py::arg("width") = py::none(),
-        py::arg("height") = py::none(), py::arg("max_depth") = py::none(), py::arg("threads") = 0);
+        py::arg("height") = py::none(), py::arg("max_depth") = py::none(),
+        py::arg("samples") = py::none(), py::arg("threads") = 0);
 
     py::class_<PreparedScene>(module, "_Renderer")
         .def(py::init<const litkit::Scene&, int>(), py::arg("scene"), py::kw_only(),
@@ -121,12 +122,15 @@ void bind_render(py::module_& module) {
             "render",
             [](PreparedScene& self, std::optional<litkit::Scene> scene,
                std::optional<std::string> reflection, std::optional<std::string> shading,
-               std::optional<int> width, std::optional<int> height, std::optional<int> max_depth) {
-                return self.render(scene, overrides(reflection, shading, width, height, max_depth));
+               std::optional<int> width, std::optional<int> height, std::optional<int> max_depth,
+               std::optional<int> samples) {
+                return self.render(
+                    scene, overrides(reflection, shading, width, height, max_depth, samples));
             },
             py::arg("scene") = py::none(), py::kw_only(), py::arg("reflection") = py::none(),
             py::arg("shading") = py::none(), py::arg("width") = py::none(),
-            py::arg("height") = py::none(), py::arg("max_depth") = py::none())
+            py::arg("height") = py::none(), py::arg("max_depth") = py::none(),
+            py::arg("samples") = py::none())
         .def_property_readonly("scene", &PreparedScene::scene)
         .def_property_readonly("mesh_builds", &PreparedScene::mesh_builds)
         .def_property_readonly("triangle_count", &PreparedScene::triangle_count)

@@ -82,7 +82,9 @@ void bind_parts(py::module_& module) {
         .def_readwrite("width", &litkit::OutputSettings::width)
         .def_readwrite("height", &litkit::OutputSettings::height)
         .def_readwrite("background", &litkit::OutputSettings::background)
-        .def_readwrite("gamma", &litkit::OutputSettings::gamma);
+        .def_readwrite("gamma", &litkit::OutputSettings::gamma)
+        .def_readwrite("samples", &litkit::OutputSettings::samples,
+                       "Samples per pixel, 1, 4, 8 or 16 (anti-aliasing)");
 }
 
 litkit::Scene load_files(const std::vector<std::filesystem::path>& files, std::uint64_t budget) {

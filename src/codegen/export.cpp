@@ -393,6 +393,7 @@ bool is_identifier(const std::string& name) {
 std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
                                   const ExportOptions& options) {
     detail::refuse_refraction(scene, "the GLSL export");
+    detail::refuse_samples(scene, "the GLSL export");
     std::vector<ModelPair> pairs = object_models(scene, options).pairs;
     if (pairs.empty()) {  // no objects: the scene's own models, ready for some
         pairs.push_back({scene.reflection.value_or(options.fallback_reflection),
@@ -418,6 +419,7 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
                                  const std::string& program_name, const std::string& scene_label,
                                  const ExportOptions& options) {
     detail::refuse_refraction(input, "the C++ export");
+    detail::refuse_samples(input, "the C++ export");
     // The program draws what the renderers draw: lengths brought into a
     // float's range by a power of two (scene/float_range.hpp; 1 for
     // ordinary scenes).

@@ -186,6 +186,18 @@ void surface_normals(const kernels::Kernels& kernels, const PreparedObject& obje
     }
 }
 
+}  // namespace
+
+// Leave the visibility buffer cleared for the next band (or sample).
+void clear_row(BandScratch& s, std::size_t offset, int begin, int end) {
+    if (begin < end) {
+        std::fill(s.depth.begin() + offset + begin, s.depth.begin() + offset + end, 0.0f);
+        std::fill(s.visible.begin() + offset + begin, s.visible.begin() + offset + end, nullptr);
+    }
+}
+
+namespace {
+
 // Clamp, gamma and encode the row's covered pixels [begin, end), the
 // background elsewhere; then clear what the row used of the visibility
 // buffer. `background_between`: some pixel in [begin, end) has no triangle.
@@ -220,11 +232,7 @@ void encode_row(const Pipeline& pipeline, BandScratch& s, std::size_t offset, in
                                 row + 3 * x);
         x = run_end;
     }
-    // Leave the visibility buffer cleared for the next band.
-    if (begin < end) {
-        std::fill(s.depth.begin() + offset + begin, s.depth.begin() + offset + end, 0.0f);
-        std::fill(s.visible.begin() + offset + begin, s.visible.begin() + offset + end, nullptr);
-    }
+    clear_row(s, offset, begin, end);
 }
 
 }  // namespace
@@ -232,7 +240,8 @@ void encode_row(const Pipeline& pipeline, BandScratch& s, std::size_t offset, in
 // Renderer::probe's record of one visible pixel, made after its row is
 // shaded (so the hot loop carries no test for it), with the fragment stage's
 // own formulas.
-void Pipeline::record_probe(const BandScratch& s, std::size_t i, int x) const {
+void Pipeline::record_probe(const BandScratch& s, std::size_t i, int x,
+                            const SamplePass& pass) const {
     const ShadeTriangle* tri = s.visible[i];
     const float w = 1.0f / s.depth[i];
     const float q1 = s.weight1[i] * w, q2 = s.weight2[i] * w, q0 = 1.0f - q1 - q2;
@@ -248,7 +257,8 @@ void Pipeline::record_probe(const BandScratch& s, std::size_t i, int x) const {
         probed.vertices = tri->vertex;
     }
     probed.weights = {q0, q1, q2};
-    probed.position = point_on_ray(camera.row_rays(probe_y), scene.output.width, x, w);
+    probed.position =
+        point_on_ray(camera.row_rays(probe_y, pass.position), scene.output.width, x, w);
     probed.normal = interpolate_normal(objects[tri->object], *tri, varyings_of(*tri), q0, q1, q2);
     probed.intensity = {s.r[static_cast<std::size_t>(x)], s.g[static_cast<std::size_t>(x)],
                         s.b[static_cast<std::size_t>(x)]};
@@ -257,13 +267,18 @@ void Pipeline::record_probe(const BandScratch& s, std::size_t i, int x) const {
 void Pipeline::shade_band(int band, BandScratch& s, Image& image) const {
     const int row_begin = band * band_height;
     const int row_end = std::min(image.height, row_begin + band_height);
-    for (int y = row_begin; y < row_end; ++y) shade_row(y, image.width, s, image.pixel(0, y));
+    const SamplePass centre;
+    for (int y = row_begin; y < row_end; ++y) {
+        const LitRow lit = light_row(y, image.width, s, centre);
+        encode_row(*this, s, static_cast<std::size_t>(y % band_height) * image.width, lit.begin,
+                   lit.end, lit.background_between, image.width, image.pixel(0, y));
+    }
 }
 
 // One row of the visibility buffer: each visible pixel gets the shading
 // model of its object, Phong and faceted pixels in runs through the SIMD
-// kernel; then clamp and gamma, and the background where nothing is.
-void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) const {
+// kernel, lit along the rays through the pass's samples.
+LitRow Pipeline::light_row(int y, int width, BandScratch& s, const SamplePass& pass) const {
     const std::size_t w = static_cast<std::size_t>(width);
     s.r.resize(w);
     s.g.resize(w);
@@ -275,16 +290,17 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
     // together; it is made of spans of one triangle each, interpolated
     // together (the corners are the same along a span). Its surfaces are in
     // s.view_w … s.nz by column; their positions are on the row's rays.
-    const RowRays rays = camera.row_rays(y);
+    const RowRays rays = camera.row_rays(y, pass.position);
     std::size_t run_length = 0;
     int run_first = 0;
     const PreparedObject* run_object = nullptr;
     auto flush = [&] {
         if (run_length == 0) return;
         const std::size_t at = static_cast<std::size_t>(run_first);
-        const kernels::SurfaceRun surface{
-            &rays,     pixel_k(run_first, width), &s.view_w[at], &s.nx[at], &s.ny[at], &s.nz[at],
-            run_length};
+        const kernels::SurfaceRun surface{&rays,         pixel_k(run_first, width) + rays.k_shift,
+                                          &s.view_w[at], &s.nx[at],
+                                          &s.ny[at],     &s.nz[at],
+                                          run_length};
         kernels.shade_phong(
             run_object->reflection, lights, run_object->raw_material, surface,
             {s.r.data() + run_first, s.g.data() + run_first, s.b.data() + run_first});
@@ -348,10 +364,10 @@ void Pipeline::shade_row(int y, int width, BandScratch& s, std::uint8_t* row) co
         x = span_end - 1;
     }
     flush();
-    if (ray_tree) refract_row(y, width, begin, end, s);
+    if (ray_tree) refract_row(y, width, begin, end, s, pass);
     if (y == probe_y && probe_x >= begin && probe_x < end && s.visible[offset + probe_x])
-        record_probe(s, offset + static_cast<std::size_t>(probe_x), probe_x);
-    encode_row(*this, s, offset, begin, end, background_between, width, row);
+        record_probe(s, offset + static_cast<std::size_t>(probe_x), probe_x, pass);
+    return {begin, end, background_between};
 }
 
 }  // namespace litkit

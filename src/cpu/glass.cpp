@@ -85,10 +85,11 @@ void Pipeline::prepare_tracer() {
     ray_tree = std::make_unique<trace::RayTree>(traced, lights, *accel, settings);
 }
 
-void Pipeline::refract_row(int y, int width, int begin, int end, BandScratch& s) const {
+void Pipeline::refract_row(int y, int width, int begin, int end, BandScratch& s,
+                           const SamplePass& pass) const {
     const std::size_t offset =
         static_cast<std::size_t>(y % band_height) * static_cast<std::size_t>(width);
-    const RowRays rays = camera.row_rays(y);
+    const RowRays rays = camera.row_rays(y, pass.position);
     const glm::vec3 eye = camera.eye;
     for (int x = begin; x < end; ++x) {
         const std::size_t i = offset + static_cast<std::size_t>(x);

@@ -19,6 +19,9 @@
 //              colours (Gouraud) or one colour (flat), clamp and gamma;
 //              pixels that see glass get the rest of their light from the
 //              ray tree (glass.cpp, with src/trace/)
+// With several samples per pixel (docs/spec.md §11; samples.cpp) the
+// vertex and setup stages run once, and each band is rasterized and shaded
+// once per sample, its samples' light summed in the band and resolved.
 // The stages carry the names of the OpenGL pipeline so that these files
 // and the generated GLSL read alike.
 #pragma once
@@ -37,6 +40,7 @@
 #include "litkit/equations.hpp"
 #include "litkit/image.hpp"
 #include "litkit/render.hpp"
+#include "litkit/samples.hpp"
 #include "scene/camera.hpp"
 #include "trace/accel.hpp"
 #include "trace/ray_tree.hpp"
@@ -58,6 +62,39 @@ constexpr std::int64_t narrow_triangle = 8;
 // Triangles whose corners lie within this many fixed-point units of each
 // other, both ways (8 pixels), step their edge functions in 32-bit SIMD lanes.
 constexpr std::int32_t small_triangle = 8 * static_cast<std::int32_t>(subpixel_one);
+
+// Pixel i covers the centre i + 0.5: the first and last pixel whose centre
+// is at or after `lo`, at or before `hi` (fixed point).
+inline int first_pixel(std::int64_t lo) {
+    return static_cast<int>((lo - subpixel_one / 2 + subpixel_one - 1) >> subpixel_bits);
+}
+inline int last_pixel(std::int64_t hi) {
+    return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits);
+}
+
+// One sample of every pixel (docs/spec.md §11): its place in the pixel and,
+// in fixed point, its offset from the centre (exact: the places are
+// multiples of 1/16, subpixel_one a multiple of 16). The rasterizer tests a
+// triangle moved by minus the offset at the pixels' centres, which is the
+// triangle tested at the samples; the fragment stage lights along the
+// samples' rays.
+struct SamplePass {
+    SamplePosition position{0.5f, 0.5f};
+    std::int32_t offset_x = 0, offset_y = 0;
+    explicit SamplePass(SamplePosition p = {0.5f, 0.5f})
+        : position(p),
+          offset_x(static_cast<std::int32_t>((p.x - 0.5f) * float(subpixel_one))),
+          offset_y(static_cast<std::int32_t>((p.y - 0.5f) * float(subpixel_one))) {}
+    bool at_centre() const { return offset_x == 0 && offset_y == 0; }
+};
+static_assert(subpixel_one % 16 == 0, "sample places are exact in fixed point");
+
+// What the fragment stage drew of a row: the columns [begin, end) it lit
+// (s.r, s.g, s.b), and whether some pixel among them has no triangle.
+struct LitRow {
+    int begin = 0, end = 0;
+    bool background_between = false;
+};
 
 // A vertex's varyings: the normal (Phong shading) or the unclamped colour
 // (Gouraud).
@@ -132,12 +169,20 @@ struct BandScratch {
     std::vector<float> q0, q1, q2;                // one row of perspective-correct weights
     std::vector<float> view_w, nx, ny, nz;        // one row of Phong surfaces (view depth, normal)
     std::vector<int> touched_begin, touched_end;  // per band row: columns drawn
-    std::size_t shaded_pixels = 0;                // this frame, by this thread
-    std::uint64_t traced_rays = 0;                // this frame, by this thread (glass)
+    // Several samples per pixel: the band's sums of the samples' clamped
+    // light, and how many samples of each pixel saw the background.
+    std::vector<float> sum_r, sum_g, sum_b;
+    std::vector<std::uint8_t> background_samples;
+    std::size_t shaded_pixels = 0;  // this frame, by this thread
+    std::uint64_t traced_rays = 0;  // this frame, by this thread (glass)
     // Setup's triangles of the chunk at hand, before they are binned.
     std::vector<BinnedTriangle> pending;
     std::vector<std::uint32_t> band_count;
 };
+
+// fragment.cpp: clears what a row used of the visibility buffer, for the
+// next band or sample ([begin, end) of the row at `offset`).
+void clear_row(BandScratch& s, std::size_t offset, int begin, int end);
 
 struct Pipeline {
     float length_scale;
@@ -157,6 +202,7 @@ struct Pipeline {
     std::vector<SetupChunk> chunks;
     std::vector<BandScratch> scratch;          // one per thread
     std::vector<std::uint8_t> background_row;  // one image row of background colour
+    float background_light[3] = {};            // a sample's light where nothing is (§11)
     int band_count = 0;
     // Set while Renderer::probe draws: the pixel to record, and the record.
     int probe_x = -1, probe_y = -1;
@@ -190,15 +236,26 @@ struct Pipeline {
                        ClippedPieces& pieces) const;
     // setup.cpp: setup and binning of one chunk of an object's triangles.
     void setup(SetupChunk& chunk, BandScratch& scratch, int width, int height);
-    // rasterize.cpp: one band's visibility buffer.
-    void rasterize_band(int band, BandScratch& scratch, int width, int height) const;
-    // fragment.cpp: one band's pixels from its visibility buffer, row by row.
+    // rasterize.cpp: one band's visibility buffer, at one sample of each
+    // pixel (its centre, with one sample per pixel).
+    void rasterize_band(int band, BandScratch& scratch, int width, int height,
+                        const SamplePass& pass = SamplePass()) const;
+    // fragment.cpp: one band's pixels from its visibility buffer, row by
+    // row: the light of a row's samples, then (one sample per pixel) clamp,
+    // gamma and the background.
     void shade_band(int band, BandScratch& scratch, Image& image) const;
-    void shade_row(int y, int width, BandScratch& scratch, std::uint8_t* row) const;
-    void record_probe(const BandScratch& scratch, std::size_t i, int x) const;
+    LitRow light_row(int y, int width, BandScratch& scratch, const SamplePass& pass) const;
+    void record_probe(const BandScratch& scratch, std::size_t i, int x,
+                      const SamplePass& pass) const;
+    // samples.cpp: one band with several samples per pixel, and the probed
+    // pixel's sample of one pass (PixelProbe::samples).
+    void draw_band_samples(int band, BandScratch& scratch, Image& image) const;
+    void record_sample(const BandScratch& scratch, std::size_t offset, const LitRow& lit,
+                       const SamplePass& pass) const;
     // glass.cpp: the row's pixels that see glass, their local part and the
-    // ray tree's light in place of what shade_row gave them.
-    void refract_row(int y, int width, int begin, int end, BandScratch& scratch) const;
+    // ray tree's light in place of what light_row gave them.
+    void refract_row(int y, int width, int begin, int end, BandScratch& scratch,
+                     const SamplePass& pass) const;
     // A clipped piece's corners (ShadeTriangle::vertex says where), or null.
     const CornerVaryings* varyings_of(const ShadeTriangle& tri) const {
         return tri.clipped() ? &chunks[tri.vertex[1]].clipped[tri.vertex[0]] : nullptr;

@@ -1,5 +1,6 @@
 // The rasterize stage, one band of rows per job: every triangle binned to
-// the band is tested at the pixel centres (i + 0.5, j + 0.5) with
+// the band is tested at the pixel centres (i + 0.5, j + 0.5), or at one of
+// the pixels' samples (docs/spec.md §11) by moving it, with
 // half-space edge functions and the top-left fill rule, and the nearest
 // surface's triangle and perspective-correct weights (depth test on 1/w)
 // go into the band's visibility buffer, which the fragment stage reads.
@@ -231,9 +232,34 @@ void visibility_wide(const RasterTriangle& tri, const ShadeTriangle* shade,
     }
 }
 
+// A triangle moved by minus a sample's offset (SamplePass), with its pixel
+// bounds at the moved place; false when it covers no pixel centre of the
+// image there. Binned with bounds that hold every sample's (setup.cpp).
+bool moved_triangle(const RasterTriangle& tri, const SamplePass& pass, int width, int height,
+                    RasterTriangle& moved) {
+    moved = tri;
+    for (int k = 0; k < 3; ++k) {
+        moved.x[k] -= pass.offset_x;
+        moved.y[k] -= pass.offset_y;
+    }
+    const auto [min_x, max_x] = std::minmax({moved.x[0], moved.x[1], moved.x[2]});
+    const auto [min_y, max_y] = std::minmax({moved.y[0], moved.y[1], moved.y[2]});
+    const int left = std::max(0, first_pixel(min_x));
+    const int right = std::min(width - 1, last_pixel(max_x));
+    const int top = std::max(0, first_pixel(min_y));
+    const int bottom = std::min(height - 1, last_pixel(max_y));
+    if (left > right || top > bottom) return false;
+    moved.min_x = static_cast<std::int16_t>(left);
+    moved.max_x = static_cast<std::int16_t>(right);
+    moved.min_y = static_cast<std::int16_t>(top);
+    moved.max_y_small = static_cast<std::uint16_t>(bottom | (tri.small() ? 0x8000 : 0));
+    return true;
+}
+
 }  // namespace
 
-void Pipeline::rasterize_band(int band, BandScratch& s, int width, int height) const {
+void Pipeline::rasterize_band(int band, BandScratch& s, int width, int height,
+                              const SamplePass& pass) const {
     const int row_begin = band * band_height;
     const int row_end = std::min(height, row_begin + band_height);
     const std::size_t pixels = static_cast<std::size_t>(row_end - row_begin) * width;
@@ -252,7 +278,10 @@ void Pipeline::rasterize_band(int band, BandScratch& s, int width, int height) c
         const BinnedTriangle* const first_triangle = chunk.binned.data() + chunk.band_start[band];
         const BinnedTriangle* const end_triangle = chunk.binned.data() + chunk.band_start[band + 1];
         for (const BinnedTriangle* t = first_triangle; t != end_triangle; ++t) {
-            const RasterTriangle& tri = t->raster;
+            RasterTriangle moved;
+            if (!pass.at_centre() && !moved_triangle(t->raster, pass, width, height, moved))
+                continue;
+            const RasterTriangle& tri = pass.at_centre() ? t->raster : moved;
             const ShadeTriangle* const shade = &t->shade;
             const int y0 = std::max<int>(tri.min_y, row_begin);
             const int y1 = std::min<int>(tri.max_y(), row_end - 1);

@@ -5,6 +5,7 @@
 #include "litkit/error.hpp"
 #include "litkit/validate.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -77,6 +78,9 @@ void Pipeline::begin_frame(int width, int height) {
     background_row.resize(3 * static_cast<std::size_t>(width));
     const Rgb8 background = to_rgb8(scene.output.background);
     for (std::size_t i = 0; i < background_row.size(); ++i) background_row[i] = background[i % 3];
+    // docs/spec.md §11: a sample that sees nothing has L = (background/255)^γ.
+    for (int c = 0; c < 3; ++c)
+        background_light[c] = std::pow(scene.output.background[c], scene.output.gamma);
     for (BandScratch& band_scratch : scratch)
         band_scratch.shaded_pixels = band_scratch.traced_rays = 0;
 }
@@ -130,6 +134,10 @@ void Renderer::render_into(Image& image) {
     });
     // rasterize and fragment, one band of rows per job.
     auto draw_band = [&](int band, BandScratch& scratch) {
+        if (impl.scene.output.samples > 1) {
+            impl.draw_band_samples(band, scratch, image);
+            return;
+        }
         impl.rasterize_band(band, scratch, width, height);
         impl.shade_band(band, scratch, image);
     };
@@ -177,9 +185,22 @@ PixelProbe Renderer::probe(int x, int y) {
     impl_->probe_x = x;
     impl_->probe_y = y;
     Image image;
+    const int samples = output.samples;
     try {
         render_into(image);
+        if (samples > 1) {
+            // The pixel from its samples (recorded above); then the rest of
+            // the record at its centre, as one sample per pixel draws it.
+            std::vector<SampleProbe> recorded = std::move(impl_->probed.samples);
+            impl_->probed = PixelProbe{};
+            impl_->probed.samples = std::move(recorded);
+            impl_->scene.output.samples = 1;
+            Image centre;
+            render_into(centre);
+            impl_->scene.output.samples = samples;
+        }
     } catch (...) {
+        impl_->scene.output.samples = samples;
         impl_->probe_x = impl_->probe_y = -1;
         throw;
     }

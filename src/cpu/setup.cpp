@@ -27,15 +27,6 @@ std::int64_t doubled_area(const WindowCorner& c0, const WindowCorner& c1, const 
     return std::int64_t{c1.x - c0.x} * (c2.y - c0.y) - std::int64_t{c1.y - c0.y} * (c2.x - c0.x);
 }
 
-// Pixel i covers the centre i + 0.5: the first and last pixel whose centre
-// is at or after `lo`, at or before `hi` (fixed point).
-int first_pixel(std::int64_t lo) {
-    return static_cast<int>((lo - subpixel_one / 2 + subpixel_one - 1) >> subpixel_bits);
-}
-int last_pixel(std::int64_t hi) {
-    return static_cast<int>((hi - subpixel_one / 2) >> subpixel_bits);
-}
-
 // One setup job's making of triangles from window corners, into the
 // thread's `pending` list (and, for clipped pieces, the chunk's `clipped`),
 // each counted for the band of rows it may touch.
@@ -44,12 +35,16 @@ struct SetupJob {
     SetupChunk& chunk;
     const PreparedObject& object;
     int width, height;
+    // Half a pixel in fixed point with several samples per pixel, else 0:
+    // the pixel bounds are then those of every pixel some sample of which
+    // may be covered (rasterize_band finds each sample's own).
+    std::int64_t margin;
     std::vector<BinnedTriangle>& pending;
     std::vector<std::uint32_t>& counts;  // triangles per band of rows, counts[b + 1] for band b
     bool flat_done = false;              // the current source triangle's flat colour is computed
 
     // Setup of a front-facing (area < 0) piece with valid corners; nothing
-    // when it covers no pixel centre of the image.
+    // when it covers no pixel centre (no sample) of the image.
     void emit_front(const WindowCorner& c0, const WindowCorner& c1, const WindowCorner& c2,
                     std::int64_t area, std::uint32_t source,
                     const std::array<std::uint32_t, 3>& vertex, const CornerVaryings* varyings) {
@@ -58,10 +53,10 @@ struct SetupJob {
         raster.y = {c0.y, c2.y, c1.y};
         const auto [min_x, max_x] = std::minmax({raster.x[0], raster.x[1], raster.x[2]});
         const auto [min_y, max_y] = std::minmax({raster.y[0], raster.y[1], raster.y[2]});
-        const int left = std::max(0, first_pixel(min_x));
-        const int right = std::min(width - 1, last_pixel(max_x));
-        const int top = std::max(0, first_pixel(min_y));
-        const int bottom = std::min(height - 1, last_pixel(max_y));
+        const int left = std::max(0, first_pixel(min_x - margin));
+        const int right = std::min(width - 1, last_pixel(max_x + margin));
+        const int top = std::max(0, first_pixel(min_y - margin));
+        const int bottom = std::min(height - 1, last_pixel(max_y + margin));
         if (left > right || top > bottom) return;
         // The doubled area in the rasterizer's order of corners is −area.
         const float inverse_area = 1.0f / static_cast<float>(-area);
@@ -162,7 +157,8 @@ void Pipeline::setup(SetupChunk& chunk, BandScratch& scratch, int width, int hei
     const std::size_t bands = static_cast<std::size_t>(band_count);
     std::vector<std::uint32_t>& counts = scratch.band_count;
     counts.assign(bands + 1, 0);
-    SetupJob job{*this, chunk, object, width, height, pending, counts};
+    const std::int64_t margin = scene.output.samples > 1 ? subpixel_one / 2 : 0;
+    SetupJob job{*this, chunk, object, width, height, margin, pending, counts};
     ClippedPieces pieces;
 
     // Welded meshes number their vertices in no order the triangles follow,

@@ -120,6 +120,9 @@ struct Kernels {
     // written as interleaved RGB bytes.
     void (*encode)(const float* r, const float* g, const float* b, std::size_t count, float gamma,
                    std::uint8_t* rgb);
+    // docs/spec.md §11: one sample's light into the sums of several,
+    // sum[i] += clamp(light[i], 0, 1) (NaN counts as 0, as encode has it).
+    void (*accumulate)(const float* light, std::size_t count, float* sum);
     // The visibility test along one row of a wide triangle (rasterize.cpp),
     // pixel i of [0, count): the unbiased edge functions v[k] + i·step[k]
     // (integers; rasterize.cpp calls this only where they stay below 2^52 in

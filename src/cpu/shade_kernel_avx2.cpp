@@ -137,6 +137,7 @@ const Kernels avx2_kernels{"avx2",
                            &Avx2Impl::perspective_weights,
                            &Avx2Impl::shade_phong,
                            &Avx2Impl::encode,
+                           &Avx2Impl::accumulate,
                            &visibility_row,
                            &visibility_small};
 

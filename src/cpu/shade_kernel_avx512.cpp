@@ -226,6 +226,7 @@ const Kernels avx512_kernels{"avx512",
                              &Avx512Impl::perspective_weights,
                              &Avx512Impl::shade_phong,
                              &encode,
+                             &Avx512Impl::accumulate,
                              &visibility_row,
                              &visibility_small};
 

@@ -215,6 +215,20 @@ struct Impl {
         }
     }
 
+    static void accumulate(const float* light, std::size_t count, float* sum) {
+        std::size_t i = 0;
+        for (; i + width <= count; i += width) {
+            const Batch v = Batch::load_unaligned(light + i);
+            const Batch clamped =
+                xsimd::min(xsimd::select(v > Batch(0.0f), v, Batch(0.0f)), Batch(1.0f));
+            (Batch::load_unaligned(sum + i) + clamped).store_unaligned(sum + i);
+        }
+        for (; i < count; ++i) {  // the last few one at a time, the same operations
+            const float v = light[i];
+            sum[i] += v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+        }
+    }
+
     static void perspective_weights(const float* inverse_w, const float* weight1,
                                     const float* weight2, std::size_t count, float* w_out,
                                     float* q0, float* q1, float* q2) {

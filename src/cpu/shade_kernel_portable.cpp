@@ -35,6 +35,7 @@ const Kernels portable_kernels{"portable",
                                &PortableImpl::perspective_weights,
                                &PortableImpl::shade_phong,
                                &PortableImpl::encode,
+                               &PortableImpl::accumulate,
                                &visibility_row_scalar,
                                nullptr};
 

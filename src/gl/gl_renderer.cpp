@@ -157,6 +157,7 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
 void GlRenderer::update(const Scene& input) {
     check_renderable(input);  // litkit/validate.hpp: the renderers' preconditions
     detail::refuse_refraction(input, "the OpenGL backend");
+    detail::refuse_samples(input, "the OpenGL backend");
     // Drawn as the CPU renderer draws it: lengths brought into a float's
     // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));
@@ -207,6 +208,7 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
     : impl_(std::make_unique<Impl>()) {
     check_renderable(input);  // before any OpenGL is set up
     detail::refuse_refraction(input, "the OpenGL backend");
+    detail::refuse_samples(input, "the OpenGL backend");
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));  // as in update
     Impl& gl = *impl_;
     if (headless) {

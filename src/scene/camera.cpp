@@ -40,14 +40,20 @@ Camera make_camera(const Observer& observer, int width, int height) {
     return camera;
 }
 
-RowRays Camera::row_rays(int j) const {
-    const float y = static_cast<float>(double(height - 2 * j - 1) / double(height));
+RowRays Camera::row_rays(int j, SamplePosition sample) const {
+    // Exact: H − 2j and 2 · sample.y (a multiple of 1/8) are, and so is
+    // their difference; at the centre it is H − 2j − 1.
+    const double numerator = double(height - 2 * j) - 2.0 * double(sample.y);
+    const float y = static_cast<float>(numerator / double(height));
     const glm::vec3 centre = forward + y * up;
-    return {{eye.x, eye.y, eye.z}, {centre.x, centre.y, centre.z}, {across.x, across.y, across.z}};
+    return {{eye.x, eye.y, eye.z},
+            {centre.x, centre.y, centre.z},
+            {across.x, across.y, across.z},
+            2.0f * sample.x - 1.0f};
 }
 
 glm::vec3 ray_direction(const RowRays& rays, int width, int i) {
-    const float k = pixel_k(i, width);
+    const float k = pixel_k(i, width) + rays.k_shift;
     glm::vec3 d;
     for (int c = 0; c < 3; ++c)
         d[c] = direction_coordinate(rays.centre[c], rays.across[c], k, as_is);

@@ -21,12 +21,15 @@
 namespace litkit {
 
 // The rays of one row of pixels: pixel i's is d = centre + k · across, with
-// the whole number k = 2i + 1 − W (exact in a float). Plain arrays, for the
-// SIMD kernels.
+// the whole number k = 2i + 1 − W (exact in a float) at the pixel's centre,
+// or k = 2(i + x) − W through the sample at x within it (docs/spec.md §11:
+// k_shift = 2x − 1 is added, a multiple of 1/8, so k stays exact). Plain
+// arrays, for the SIMD kernels.
 struct RowRays {
     float eye[3];
     float centre[3];  // f + y · tan(fov/2) · u (the row's y): d at k = 0
     float across[3];  // tan(fov/2) · aspect / W · r: d's change per unit of k
+    float k_shift = 0.0f;
 };
 
 // k of column i in a row of `width` pixels (RowRays).
@@ -63,14 +66,16 @@ struct Camera {
     glm::vec3 across{0.0f};   // tan(fov/2) · aspect / W · r
     int width = 0, height = 0;
 
-    // Row j's rays: y = 1 − 2(j + 0.5)/H.
-    RowRays row_rays(int j) const;
+    // Row j's rays through the samples at `sample` in its pixels:
+    // y = 1 − 2(j + sample.y)/H, k_shift = 2 · sample.x − 1; the pixels'
+    // centres by default.
+    RowRays row_rays(int j, SamplePosition sample = {0.5f, 0.5f}) const;
 };
 
 Camera make_camera(const Observer& observer, int width, int height);
 
-// d of pixel i on the row whose rays are `rays` (not of unit length: its
-// component along f is 1).
+// d of pixel i on the row whose rays are `rays`, k = pixel_k(i) + k_shift
+// (not of unit length: its component along f is 1).
 glm::vec3 ray_direction(const RowRays& rays, int width, int i);
 
 // The world position at column i of that row at view depth w, eye + w · d:

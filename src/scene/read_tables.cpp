@@ -31,7 +31,8 @@ constexpr std::array<std::string_view, 6> observer_keys{"position", "look_at", "
                                                         "fov",      "near",    "far"};
 constexpr std::array<std::string_view, 5> lighting_keys{"reflection", "shading", "normals",
                                                         "crease_angle", "max_depth"};
-constexpr std::array<std::string_view, 4> output_keys{"width", "height", "background", "gamma"};
+constexpr std::array<std::string_view, 5> output_keys{"width", "height", "background", "gamma",
+                                                      "samples"};
 // The material keys of docs/spec.md §5 and the parameters of §9.1: every
 // object takes them all, whatever its reflection model, so that models can be
 // switched freely.
@@ -232,6 +233,7 @@ void SceneReader::read_output(const Site& site) {
     if (auto background = read_color(site, "background"))
         output.background = unit_color(*background);
     if (auto gamma = read_number(site, "gamma")) output.gamma = *gamma;
+    if (auto samples = read_integer(site, "samples")) output.samples = *samples;
 }
 
 void SceneReader::read_lights(const Site& root, const toml::node& node) {

@@ -288,6 +288,9 @@ class Validator {
         integer_in(output.height, 1, max_image_side, "output.height", "output", "height");
         at_least(output.gamma, 0.0f, false, "output.gamma", "output", "gamma");
         finite(output.gamma, "output.gamma", "output", "gamma");
+        if (!valid_sample_count(output.samples))
+            error("output.samples", "output",
+                  "samples must be 1, 4, 8 or 16, found " + std::to_string(output.samples));
         // Colours are 0–1 (lighting.hpp); a file's 0–255 always is.
         const glm::vec3& b = output.background;
         if (!(b.x >= 0.0f && b.x <= 1.0f && b.y >= 0.0f && b.y <= 1.0f && b.z >= 0.0f &&

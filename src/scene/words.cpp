@@ -35,9 +35,16 @@ namespace {
 // Other names users give a key (from other renderers and the literature),
 // which no spelling distance connects with litkit's.
 constexpr std::pair<std::string_view, std::string_view> synonyms[] = {
-    {"refraction_index", "ior"},    {"refractive_index", "ior"},
-    {"index_of_refraction", "ior"}, {"transparency", "transmission"},
-    {"max_bounces", "max_depth"},   {"max_recursion_depth", "max_depth"},
+    {"refraction_index", "ior"},
+    {"refractive_index", "ior"},
+    {"index_of_refraction", "ior"},
+    {"transparency", "transmission"},
+    {"max_bounces", "max_depth"},
+    {"max_recursion_depth", "max_depth"},
+    {"antialias", "samples"},
+    {"antialiasing", "samples"},
+    {"msaa", "samples"},
+    {"spp", "samples"},
 };
 
 }  // namespace

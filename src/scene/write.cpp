@@ -173,6 +173,8 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
             "\nheight = " + std::to_string(scene.output.height) +
             "\nbackground = " + rgb8(to_rgb8(scene.output.background)) +
             "\ngamma = " + number(scene.output.gamma) + "\n";
+    if (scene.output.samples != default_samples)
+        text += "samples = " + std::to_string(scene.output.samples) + "\n";
     for (const SceneLight& light : scene.lights) text += light_text(light);
     for (const SceneObject& object : scene.objects) text += object_text(object, folder);
     return text;

@@ -78,6 +78,7 @@ PixelExplanation PixelExplainer::explain(int x, int y) {
     explanation.rgb = probe.rgb;
     explanation.gamma = scene.output.gamma;
     explanation.hit = probe.hit;
+    explanation.samples = probe.samples;
     if (!probe.hit) return explanation;
 
     const SceneObject& object = scene.objects.at(probe.object);

@@ -102,16 +102,56 @@ std::string rgb_text(const Rgb8& rgb) {
            std::to_string(rgb[2]) + ")";
 }
 
+// docs/spec.md §11: each sample's L_k and their mean, which gamma turns
+// into the pixel.
+std::string samples_text(const PixelExplanation& e, const Scene& scene) {
+    std::string text = "\nanti-aliasing (docs/spec.md §11): " + std::to_string(e.samples.size()) +
+                       " samples, each lit as a pixel centre would be, its light L clamped to\n"
+                       "[0, 1] (the background's: its colour ^ gamma); the pixel is their mean:\n";
+    glm::vec3 sum{0.0f};
+    for (std::size_t k = 0; k < e.samples.size(); ++k) {
+        const SampleProbe& sample = e.samples[k];
+        text += "  sample " + std::to_string(k) + " at (" + num(sample.position.x) + ", " +
+                num(sample.position.y) + "): " +
+                (sample.hit ? object_label(scene, sample.object) : std::string("background")) +
+                ", L = " + vec(sample.light) + "\n";
+        sum += sample.light;
+    }
+    text += "mean = " + vec(sum / static_cast<float>(e.samples.size())) + "\n";
+    if (e.gamma != 1.0f)
+        text += "gamma " + num(e.gamma) + ": each channel ^ (1/" + num(e.gamma) + ")\n";
+    text += "rgb = round(255 * that) = " + rgb_text(e.rgb) + "\n";
+    return text;
+}
+
+std::string samples_json(const PixelExplanation& e) {
+    std::string out = ", \"samples\": [";
+    glm::vec3 sum{0.0f};
+    for (std::size_t k = 0; k < e.samples.size(); ++k) {
+        const SampleProbe& sample = e.samples[k];
+        out += std::string(k ? ", " : "") + "{\"position\": [" + json::number(sample.position.x) +
+               ", " + json::number(sample.position.y) +
+               "], \"hit\": " + (sample.hit ? "true" : "false");
+        if (sample.hit) out += ", \"object_index\": " + std::to_string(sample.object);
+        out += ", \"light\": " + json_vec(sample.light) + "}";
+        sum += sample.light;
+    }
+    return out + "], \"mean\": " + json_vec(sum / static_cast<float>(e.samples.size()));
+}
+
 }  // namespace
 
 std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
     std::string text = "pixel (" + std::to_string(e.x) + ", " + std::to_string(e.y) + ") of the " +
                        std::to_string(scene.output.width) + "x" +
                        std::to_string(scene.output.height) + " image\n";
+    if (!e.hit && !e.samples.empty())
+        return text + "no object covers its centre\n" + samples_text(e, scene);
     if (!e.hit) {
         return text + "no object covers it: the background colour, as given (no gamma)\nrgb = " +
                rgb_text(e.rgb) + "\n";
     }
+    if (!e.samples.empty()) text += "at its centre (one sample; all of them below):\n";
     const Material& material = scene.objects[e.object].material;
     text += "visible: " + object_label(scene, e.object) + ", triangle " +
             std::to_string(e.triangle) +
@@ -167,6 +207,7 @@ std::string explanation_text(const PixelExplanation& e, const Scene& scene) {
         text += "\nI = " + vec(e.sum) + " (as the renderer computed it)\n";
     }
     text += "clamp to [0, 1]: " + vec(c) + "\n";
+    if (!e.samples.empty()) return text + samples_text(e, scene);
     if (e.gamma != 1.0f)
         text += "gamma " + num(e.gamma) + ": each channel ^ (1/" + num(e.gamma) + ")\n";
     text += "rgb = round(255 * that) = " + rgb_text(e.rgb) + "\n";
@@ -213,6 +254,7 @@ std::string explanation_json(const PixelExplanation& e, const Scene& scene) {
         out += ", \"sum\": " + json_vec(e.sum) + ", \"gamma\": " + json::number(e.gamma);
         if (!e.ray_tree.empty()) out += ", \"ray_tree\": " + detail::ray_tree_json(e, scene);
     }
+    if (!e.samples.empty()) out += samples_json(e);
     out += ", \"rgb\": [" + std::to_string(e.rgb[0]) + ", " + std::to_string(e.rgb[1]) + ", " +
            std::to_string(e.rgb[2]) + "]}";
     return out;

@@ -138,6 +138,20 @@ try {
   }
   await choose("#reflection", "");
   await choose("#shading", "");
+
+  // Anti-aliasing (docs/spec.md §11): the samples menu acts as --samples.
+  for (const [samples, example] of [["4", "reflection-models.toml"], ["16", "glass-lens.toml"]]) {
+    await check(`samples ${samples} (${example}) equals \`litkit render --samples ${samples}\``, async () => {
+      await choose("#example", example);
+      await choose("#samples", samples);
+      const text = await editorText();
+      const picture = await canvasPixels(page, "picture");
+      expectSame(picture, litkitRender(litkit, text, ["--samples", samples], exampleMeshes), `samples ${samples}`);
+      expect(difference(picture, litkitRender(litkit, text, [], exampleMeshes)) !== null,
+             "the picture with samples equals the one without");
+    });
+  }
+  await choose("#samples", "0");
   await choose("#example", "");
 
   await check("an invalid value: the located error is shown and the picture is unchanged", async () => {

@@ -126,7 +126,8 @@
     clearTimeout(page.pending);
     page.pending = null;
     const start = performance.now();
-    const answer = call("litkit_render", editor.value, $("reflection").value, $("shading").value);
+    const answer = call("litkit_render", editor.value, $("reflection").value, $("shading").value,
+                        Number($("samples").value));
     page.last = answer;
     page.answers += 1;
     showDiagnostics(answer.ok ? [] : answer.errors, $("errors"));
@@ -186,6 +187,7 @@
   });
   $("reflection").addEventListener("change", render);
   $("shading").addEventListener("change", render);
+  $("samples").addEventListener("change", render);
   for (const radio of document.querySelectorAll('input[name="view"]')) {
     radio.addEventListener("change", () => {
       picture.hidden = view() === "grid";

@@ -186,10 +186,11 @@ const char* reply(std::string text) {
 extern "C" {
 
 // Parses, validates and draws `text` with the page's model choices ("" for
-// the scene's own). On success the picture replaces the last one; on failure
-// the last good scene and picture stay, and the answer lists the errors.
+// the scene's own) and samples per pixel (0 for the scene's own). On success
+// the picture replaces the last one; on failure the last good scene and
+// picture stay, and the answer lists the errors.
 EMSCRIPTEN_KEEPALIVE const char* litkit_render(const char* text, const char* reflection,
-                                               const char* shading) {
+                                               const char* shading, int samples) {
     try {
         const auto start = std::chrono::steady_clock::now();
         litkit::Scene scene = litkit::parse_scene(text, scene_path);
@@ -198,6 +199,12 @@ EMSCRIPTEN_KEEPALIVE const char* litkit_render(const char* text, const char* ref
                 .count();
         const bool lighting_given = scene.reflection && scene.shading;
         choose_models(scene, reflection, shading);
+        if (samples != 0) {  // as --samples (docs/spec.md §11)
+            if (!litkit::valid_sample_count(samples))
+                throw litkit::ArgumentError("samples must be 1, 4, 8 or 16, found " +
+                                            std::to_string(samples));
+            scene.output.samples = samples;
+        }
         std::string answer =
             "{\"ok\":true," + draw(scene) + ",\"parse_ms\":" + json::number(parse_ms) +
             ",\"warnings\":" + json_diagnostics(scene.warnings) +

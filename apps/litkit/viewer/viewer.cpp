@@ -92,6 +92,13 @@ fs::path next_screenshot_name(const std::string& stem) {
     }
 }
 
+// The count of samples per pixel after `samples` among 1, 4, 8, 16, round.
+int next_sample_count(int samples) {
+    const auto& counts = litkit::sample_counts;
+    const auto at = std::find(counts.begin(), counts.end(), samples);
+    return at == counts.end() || at + 1 == counts.end() ? counts.front() : *(at + 1);
+}
+
 struct KeyModel {
     SDL_Keycode key;
     litkit::Shading shading;
@@ -188,10 +195,19 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             return glass && moving ? std::min(scene.max_depth, moving_depth) : scene.max_depth;
         };
         int drawn_depth = 0;  // max_depth of the picture shown
+        // Anti-aliasing (docs/spec.md §11) likewise: one sample while the view
+        // moves, the scene's at rest (the window is then `litkit render`'s
+        // picture). The OpenGL backend draws one sample.
+        auto samples_now = [&] {
+            const bool moving = dragged || turntable || options.benchmark_frames > 0;
+            return moving || options.backend == litkit::Backend::Gl ? 1 : scene.output.samples;
+        };
+        int drawn_samples = 0;  // samples of the picture shown
         // The scene the picture shows: the file's, the keys' models, the camera.
         auto shown_scene = [&] {
             litkit::Scene shown = scene;
             shown.max_depth = depth_now();
+            shown.output.samples = samples_now();
             shown.observer = camera.observer;
             if (key_reflection) shown.reflection = key_reflection;
             if (key_shading) shown.shading = key_shading;
@@ -209,6 +225,8 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                     litkit::to_string(shown.reflection.value_or(litkit::default_reflection))) +
                 " / " +
                 std::string(litkit::to_string(shown.shading.value_or(litkit::default_shading)));
+            if (scene.output.samples > 1)
+                title += " - " + std::to_string(scene.output.samples) + " samples at rest";
             if (!diagnostics.empty()) title += " - invalid edit, showing the last good scene";
             SDL_SetWindowTitle(window, title.c_str());
         };
@@ -255,6 +273,9 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                             camera.observer = scene.observer, dirty = true;
                         else if (key == SDLK_SPACE)
                             turntable = !turntable, last_turn = clock_type::now();
+                        else if (key == SDLK_a)  // the next of 1, 4, 8, 16 samples
+                            scene.output.samples = next_sample_count(scene.output.samples),
+                            set_title(), dirty = true;
                         else if (key == SDLK_0)
                             key_reflection.reset(), key_shading.reset(), dirty = true;
                         else if (key >= SDLK_1 && key <= SDLK_9) {
@@ -388,11 +409,13 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 redraw = true;
             }
 
-            if (drawer && depth_now() != drawn_depth) dirty = true;  // the view stopped
+            if (drawer && (depth_now() != drawn_depth || samples_now() != drawn_samples))
+                dirty = true;  // the view stopped
             if (dirty) {
                 const auto start = clock_type::now();
                 const litkit::Scene shown = shown_scene();
                 drawn_depth = shown.max_depth;
+                drawn_samples = shown.output.samples;
                 try {
                     if (!drawer)
                         drawer = std::make_unique<Drawer>(options.backend, shown, options.threads);
@@ -460,6 +483,17 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
                 edited |= ImGui::SliderFloat("gamma", &scene.output.gamma, 0.2f, 4.0f);
                 edited |= ImGui::SliderInt("max_depth", &scene.max_depth, 1, 16, "%d",
                                            ImGuiSliderFlags_AlwaysClamp);
+                const char* const sample_names[] = {"1", "4", "8", "16"};
+                int sample_index =
+                    static_cast<int>(std::find(litkit::sample_counts.begin(),
+                                               litkit::sample_counts.end(), scene.output.samples) -
+                                     litkit::sample_counts.begin());
+                if (ImGui::Combo("samples", &sample_index, sample_names, 4)) {
+                    scene.output.samples = litkit::sample_counts[static_cast<std::size_t>(
+                        std::clamp(sample_index, 0, 3))];
+                    set_title();
+                    dirty = true;
+                }
                 for (std::size_t i = 0; i < scene.objects.size(); ++i) {
                     litkit::SceneObject& object = scene.objects[i];
                     const std::string label =
