@@ -258,6 +258,6 @@ def test_checks_lists_every_problem_and_returns_the_warnings(tmp_path):
 def test_check_of_text_says_to_use_checks():
     with pytest.raises(litkit.IoError) as raised:
         litkit.check("[room\n")
-    assert raised.value.message.startswith("cannot read '[room\n'")
+    assert raised.value.message.startswith("cannot read '[room")  # a path, as check reads it
     notes = getattr(raised.value, "__notes__", [])
     assert any("litkit.checks" in note for note in notes) or not hasattr(raised.value, "add_note")
