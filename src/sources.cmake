@@ -4,7 +4,8 @@
 # fuzz/CMakeLists.txt (through LITKIT_LOADER_SOURCES) take theirs from here,
 # so that a new file is named once.
 set(LITKIT_LAYER_SOURCES_core
-    core/backend.cpp core/error.cpp core/files.cpp core/image.cpp core/thread_pool.cpp)
+    core/backend.cpp core/error.cpp core/files.cpp core/image.cpp core/portable_math.cpp
+    core/thread_pool.cpp)
 set(LITKIT_LAYER_SOURCES_lighting
     lighting/lighting.cpp)
 set(LITKIT_LAYER_SOURCES_geometry

@@ -954,6 +954,21 @@ TEST(ObjectToWorld, ScalesThenRotatesThenTranslates) {
     expect_near_vec3(transform_point(object, {0, 0, 0}), {1, 2, 3});
 }
 
+// Right angles turn axes onto axes exactly, and whole turns come off
+// exactly (the sines and cosines are of degrees, core/portable_math.hpp):
+// the same bits in every build, whatever its C library's sinf.
+TEST(ObjectToWorld, RightAnglesAreExactAndWholeTurnsComeOff) {
+    SceneObject object;
+    object.rotation_degrees = {90, 90, 0};
+    EXPECT_EQ(transform_point(object, {0, 1, 0}), glm::vec3(1, 0, 0));
+    object.rotation_degrees = {0, 180, 270};
+    EXPECT_EQ(transform_point(object, {1, 0, 0}), glm::vec3(0, 1, 0));
+    SceneObject turned, reduced;
+    turned.rotation_degrees = {10000, -1234.5f, 1e6f};  // 280, 205.5, 280 after whole turns
+    reduced.rotation_degrees = {280, 205.5f, 280};
+    EXPECT_EQ(object_to_world(turned), object_to_world(reduced));
+}
+
 // ---------------------------------------------------------------------------
 // The default scene (docs/spec.md §7, R12)
 

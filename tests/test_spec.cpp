@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -346,4 +347,111 @@ TEST(DocsTables, MaxDepthsRangeAndDefaultAreTheLibrarys) {
     EXPECT_NE(spec.find("integer " + range + " | " + std::to_string(litkit::default_max_depth)),
               std::string::npos)
         << spec;
+}
+
+// The lists of choices written out in running text: the starting file that
+// `litkit init` writes and the playground opens with, the scene comments and
+// the error messages quoted in README.md and docs/, against the library's
+// lists. A model added to the family and missing from any of them fails here.
+namespace {
+
+std::vector<std::string> reflection_names() {
+    std::vector<std::string> names;
+    for (const litkit::ReflectionModel& model : litkit::reflection_models())
+        names.emplace_back(model.name);
+    return names;
+}
+
+std::string trimmed(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" #");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(' ') - first + 1);
+}
+
+// The names of the "a | b | c" list that begins at column `at` of lines[i],
+// continued on the next lines while a line ends, or the next one starts
+// (after "#" and spaces), with '|'.
+std::vector<std::string> piped_names(const std::vector<std::string>& lines, std::size_t i,
+                                     std::size_t at) {
+    std::string list = lines[i].substr(at);
+    while (i + 1 < lines.size() &&
+           (trimmed(list).ends_with('|') || trimmed(lines[i + 1]).starts_with('|')))
+        list.append(" ").append(trimmed(lines[++i]));
+    std::vector<std::string> names;
+    std::istringstream in(list);
+    for (std::string name; std::getline(in, name, '|');)
+        if (!trimmed(name).empty()) names.push_back(trimmed(name));
+    return names;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::istringstream in(text);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+TEST(TextsFollowTheFamily, TheStartingFileListsEveryModelWeightingAndLight) {
+    const std::vector<std::string> lines = lines_of(std::string(litkit::default_scene_toml()));
+    std::map<std::string, std::vector<std::string>> lists;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        for (const char* label : {"reflection:", "shading:", "normals:"}) {
+            const std::string start = std::string("#   ") + label;
+            if (lines[i].starts_with(start)) lists[label] = piped_names(lines, i, start.size());
+        }
+    }
+    EXPECT_EQ(lists["reflection:"], reflection_names());
+    EXPECT_EQ(lists["shading:"], strings(litkit::shading_names));
+    EXPECT_EQ(lists["normals:"], strings(litkit::normals_names));
+    for (const std::string& line : lines)  // the comments fit an 80-column editor
+        if (line.starts_with('#')) EXPECT_LT(line.size(), 80u) << line;
+    // Every light type is named: the scene's own and the "other" ones.
+    const std::string text(litkit::default_scene_toml());
+    for (std::string_view kind : litkit::light_kind_names)
+        EXPECT_NE(text.find(std::string(kind)), std::string::npos) << kind;
+}
+
+TEST(TextsFollowTheFamily, TheDocsListsInCommentsAndMessagesAreTheLibrarys) {
+    std::vector<std::string> pages = {std::string(LITKIT_SOURCE_DIR) + "/README.md"};
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(LITKIT_SOURCE_DIR) + "/docs"))
+        if (entry.path().extension() == ".md") pages.push_back(entry.path().string());
+    int reflection_lists = 0, shading_lists = 0, messages = 0;
+    for (const std::string& page : pages) {
+        std::ifstream in(page);
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::vector<std::string> lines = lines_of(text.str());
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            // A scene file's comment: `reflection = "phong"  # lambert | ...`.
+            if (const std::size_t at = lines[i].find("# lambert |"); at != std::string::npos) {
+                EXPECT_EQ(piped_names(lines, i, at + 2), reflection_names())
+                    << page << ":" << i + 1;
+                ++reflection_lists;
+            }
+            if (const std::size_t at = lines[i].find("# flat |"); at != std::string::npos) {
+                EXPECT_EQ(piped_names(lines, i, at + 2), strings(litkit::shading_names))
+                    << page << ":" << i + 1;
+                ++shading_lists;
+            }
+            // The reader's message, as the docs quote it: "(one of a, b, c)".
+            const std::string one_of = "is not a reflection model (one of ";
+            if (const std::size_t at = lines[i].find(one_of); at != std::string::npos) {
+                const std::size_t begin = at + one_of.size();
+                std::istringstream list(lines[i].substr(begin, lines[i].find(')', begin) - begin));
+                std::vector<std::string> names;
+                for (std::string name; std::getline(list, name, ',');)
+                    names.push_back(trimmed(name));
+                EXPECT_EQ(names, reflection_names()) << page << ":" << i + 1;
+                ++messages;
+            }
+        }
+    }
+    // The README's and docs/scene-format.md's example scenes, the messages
+    // quoted in docs/user-guide.md and docs/scene-format.md: found, not skipped.
+    EXPECT_GE(reflection_lists, 2);
+    EXPECT_GE(shading_lists, 2);
+    EXPECT_GE(messages, 2);
 }

@@ -40,8 +40,14 @@ inline float max(float a, float b) { return a > b ? a : b; }
 /// The smaller of a and b.
 inline float min(float a, float b) { return a < b ? a : b; }
 using std::floor;
-using std::pow;
 using std::sqrt;
+/// base^exponent with C's powf's special cases (0^0 = 1, a negative base
+/// only with a whole exponent), but the same bits in every build: C
+/// libraries' powf differ in the last bit (glibc's and the WebAssembly
+/// build's), which could move a pixel between `litkit render` and the
+/// playground. Computed in double with IEEE arithmetic only and rounded once
+/// (src/core/portable_math.cpp); correctly rounded but for rare ties.
+float pow(float base, float exponent);
 //@}
 
 /// pow of SIMD batches of floats (the CPU kernels' T): for a whole exponent

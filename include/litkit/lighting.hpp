@@ -61,8 +61,9 @@ inline Rgb8 to_rgb8(const glm::vec3& color) {
 ///    tests/test_lighting.cpp.
 /// Every path follows from these: the scalar and SIMD evaluators and the GLSL
 /// generator (through equations::with_reflection), the exported program,
-/// `explain`, validation, the command line, the Python binding and the
-/// playground (through reflection_models()).
+/// `explain`, validation, the command line, the Python binding, the
+/// playground and the starting file of `litkit init` (through
+/// reflection_models(); tests/test_spec.cpp checks the lists in the docs).
 enum class Reflection {
     Lambert,       ///< "lambert": diffuse only, D = max(N·L, 0).
     HalfLambert,   ///< "half-lambert": Valve's wrapped diffuse, D = (0.5·N·L + 0.5)².

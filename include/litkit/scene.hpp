@@ -281,7 +281,9 @@ std::string scene_to_toml(const Scene& scene, const std::filesystem::path& writt
 
 /// The built-in default scene of docs/spec.md §7 (R12): one cube, one point light at
 /// the centre of the room, Phong shading, Phong reflection. As TOML text,
-/// with comments (what `litkit init` writes).
+/// with comments (what `litkit init` writes and the playground starts
+/// with); its comments list every reflection model, shading model, normals
+/// weighting and light type, taken from the library's lists.
 std::string_view default_scene_toml();
 /// The built-in default scene, loaded.
 Scene default_scene();

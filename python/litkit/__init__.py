@@ -51,9 +51,9 @@ from ._litkit import (  # noqa: F401  (the public API)
 __all__ = [
     "ArgumentError", "Diagnostic", "Error", "Explanation", "Image", "IoError", "Light", "Material",
     "Observer", "Output", "Renderer", "Room", "Scene", "SceneError", "SceneWarning", "check",
-    "default_scene", "default_scene_toml", "dumps", "encode_png", "explain", "light_types", "load",
-    "loads",
-    "normals_weightings", "reflection_models", "render", "shade", "shade_terms", "shading_models",
+    "checks", "default_scene", "default_scene_toml", "dumps", "encode_png", "explain",
+    "light_types", "load", "loads", "normals_weightings", "reflection_models", "render", "shade",
+    "shade_terms", "shading_models",
 ]
 
 
@@ -112,16 +112,32 @@ def default_scene():
     return _litkit.default_scene()
 
 
-def check(*scene):
-    """Checks a scene without rendering it: files (as ``load``), or a Scene
-    object after changes made in Python. Raises litkit.Error (SceneError with
-    every problem, IoError) as ``litkit check`` reports it; returns the warnings
-    (a list of Diagnostic)."""
+def check(*scene, max_triangles=None):
+    """Checks a scene without rendering it: files (as ``load``; TOML text goes
+    to ``checks``), or a Scene object after changes made in Python. Raises
+    litkit.Error (SceneError with every problem, IoError) as ``litkit check``
+    reports it; returns the warnings (a list of Diagnostic)."""
     if len(scene) == 1 and isinstance(scene[0], Scene):
         return _litkit._check_scene(scene[0])
     with _warnings.catch_warnings():
         _warnings.simplefilter("ignore", SceneWarning)
-        return list(load(*scene).warnings)
+        try:
+            return list(load(*scene, max_triangles=max_triangles).warnings)
+        except IoError as error:
+            looks_like_text = any(isinstance(f, str) and "\n" in f for f in _paths(scene))
+            if looks_like_text and hasattr(error, "add_note"):  # Python 3.11
+                error.add_note("litkit.check reads files; litkit.checks(text) checks TOML text")
+            raise
+
+
+def checks(scene, name=None):
+    """Checks a scene given as TOML text or as a dict (as ``loads`` reads
+    them) without rendering it. Raises litkit.Error (SceneError with every
+    problem, IoError for a TOML syntax error) located in ``name`` (default
+    ``<string>`` / ``<dict>``); returns the warnings (a list of Diagnostic)."""
+    with _warnings.catch_warnings():
+        _warnings.simplefilter("ignore", SceneWarning)
+        return list(loads(scene, name).warnings)
 
 
 def render(scene=None, *, reflection=None, shading=None, width=None, height=None,

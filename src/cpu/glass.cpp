@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "core/parallel.hpp"
+#include "core/portable_math.hpp"
 #include "cpu/pipeline.hpp"
 
 namespace litkit {
@@ -80,8 +81,8 @@ void Pipeline::prepare_tracer() {
                                               room.depth * room.depth);
     const glm::vec3 background = scene.output.background;
     const float gamma = scene.output.gamma;
-    settings.background = {std::pow(background.x, gamma), std::pow(background.y, gamma),
-                           std::pow(background.z, gamma)};
+    settings.background = {power(background.x, gamma), power(background.y, gamma),
+                           power(background.z, gamma)};
     ray_tree = std::make_unique<trace::RayTree>(traced, lights, *accel, settings);
 }
 

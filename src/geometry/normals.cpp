@@ -1,6 +1,7 @@
 // Normals (docs/spec.md §2, §9.2, DD8, DD9): each face's, each vertex's as
 // the faces at its welded vertex weight them, and each corner's under a
 // crease angle; the scene-file names of the weightings.
+#include "core/portable_math.hpp"
 #include "geometry/corner_angle.hpp"
 #include "geometry/creased_normals.hpp"
 #include "geometry/weld.hpp"
@@ -450,14 +451,14 @@ CreasedNormals creased_normals(const Mesh& mesh, Normals weighting, float crease
         });
     for (glm::vec3& normal : vertex_normal) normal = normalized_or_zero(normal);
 
-    const double limit = std::cos(glm::radians(double(crease_angle_degrees)));
+    const double limit = cos_degrees(crease_angle_degrees);
     // A shortcut that decides most vertices in one pass over the triangles:
     // if every n̂_g at v lies within half the crease angle of one direction
     // (the vertex normal), any two lie within the crease angle of each other,
     // so nothing splits there and every corner at v has v's normal. The
     // margin keeps the shortcut to vertices where the pairwise test below,
     // in float, would find no split either.
-    const double half_limit = std::cos(glm::radians(double(crease_angle_degrees)) / 2.0) + 1e-5;
+    const double half_limit = cos_degrees(double(crease_angle_degrees) / 2.0) + 1e-5;
     std::vector<std::uint8_t> pairwise(position_count, 0);
     std::size_t pairwise_count = 0;
     for (std::size_t t = 0; t < triangle_count; ++t) {

@@ -1,6 +1,7 @@
 // Built-in shapes (docs/spec.md §2). Scene validation checks the parameters first
 // (docs/spec.md §6); the checks here are a guard for callers of the library.
 #include "litkit/shapes.hpp"
+#include "core/portable_math.hpp"
 #include "litkit/error.hpp"
 
 #include <array>
@@ -8,7 +9,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -115,17 +115,19 @@ Mesh make_sphere(float radius, int segments, int rings) {
     // Every circle has the same azimuths: their sines and cosines once.
     std::vector<double> azimuth_sin(to_index(segments));
     std::vector<double> azimuth_cos(to_index(segments));
+    // Angles in degrees (core/portable_math.hpp): the same bits in every
+    // build, and exact at the right angles.
     for (int segment = 0; segment < segments; ++segment) {
-        const double azimuth = 2.0 * std::numbers::pi * segment / segments;
-        azimuth_sin[to_index(segment)] = std::sin(azimuth);
-        azimuth_cos[to_index(segment)] = std::cos(azimuth);
+        const SineCosine azimuth = sin_cos_degrees(360.0 * segment / segments);
+        azimuth_sin[to_index(segment)] = azimuth.sine;
+        azimuth_cos[to_index(segment)] = azimuth.cosine;
     }
     const std::uint32_t north_pole = 0;
     mesh.positions.emplace_back(0.0f, radius, 0.0f);
     for (int circle = 1; circle <= latitude_circles; ++circle) {
-        const double polar_angle = std::numbers::pi * circle / rings;  // from +y
-        const double circle_radius = radius * std::sin(polar_angle);
-        const double height = radius * std::cos(polar_angle);
+        const SineCosine polar_angle = sin_cos_degrees(180.0 * circle / rings);  // from +y
+        const double circle_radius = radius * polar_angle.sine;
+        const double height = radius * polar_angle.cosine;
         for (int segment = 0; segment < segments; ++segment) {
             mesh.positions.emplace_back(circle_radius * azimuth_sin[to_index(segment)], height,
                                         circle_radius * azimuth_cos[to_index(segment)]);
@@ -174,13 +176,14 @@ Mesh make_torus(float major_radius, float minor_radius, int segments, int sides)
     mesh.positions.reserve(static_cast<std::size_t>(segments) * to_index(sides));
     mesh.triangles.reserve(2 * static_cast<std::size_t>(segments) * to_index(sides));
     for (int segment = 0; segment < segments; ++segment) {
-        const double azimuth = 2.0 * std::numbers::pi * segment / segments;  // around y
+        const SineCosine azimuth = sin_cos_degrees(360.0 * segment / segments);  // around y
         for (int side = 0; side < sides; ++side) {
-            const double tube_angle = 2.0 * std::numbers::pi * side / sides;  // 0 = outer equator
-            const double distance_from_axis = major_radius + minor_radius * std::cos(tube_angle);
-            mesh.positions.emplace_back(distance_from_axis * std::sin(azimuth),
-                                        minor_radius * std::sin(tube_angle),
-                                        distance_from_axis * std::cos(azimuth));
+            // 0 = the outer equator
+            const SineCosine tube_angle = sin_cos_degrees(360.0 * side / sides);
+            const double distance_from_axis = major_radius + minor_radius * tube_angle.cosine;
+            mesh.positions.emplace_back(distance_from_axis * azimuth.sine,
+                                        minor_radius * tube_angle.sine,
+                                        distance_from_axis * azimuth.cosine);
         }
     }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/scale_free.hpp"
+#include "core/portable_math.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/error.hpp"
 
@@ -77,6 +78,8 @@ std::optional<LightKind> parse_light_kind(std::string_view text) {
 
 namespace equations {
 
+float pow(float base, float exponent) { return power(base, exponent); }
+
 PreparedLight prepare_light(const Light& light) {
     PreparedLight prepared;
     prepared.radiance = light.radiance();
@@ -98,11 +101,11 @@ PreparedLight prepare_light(const Light& light) {
                 prepared.position = kind.position;
                 prepared.attenuation = kind.attenuation;
                 prepared.direction = scale_free::unit(kind.direction);
-                double radians = static_cast<double>(kind.cutoff_degrees) * (M_PI / 180.0);
-                prepared.cos_cutoff = static_cast<float>(std::cos(radians));
+                const double cutoff = kind.cutoff_degrees;
+                prepared.cos_cutoff = static_cast<float>(cos_degrees(cutoff));
                 // docs/spec.md §9.3: θi = θo·(1 − penumbra); penumbra 0 gives the hard edge.
-                double inner = radians * (1.0 - static_cast<double>(kind.penumbra));
-                prepared.cos_inner = static_cast<float>(std::cos(inner));
+                const double inner = cutoff * (1.0 - static_cast<double>(kind.penumbra));
+                prepared.cos_inner = static_cast<float>(cos_degrees(inner));
                 prepared.exponent = kind.exponent;
             }
         },
@@ -212,7 +215,7 @@ ShadeTerms shade_terms(Reflection reflection, const Material& material,
 unsigned char to_pixel(float intensity, float gamma) {
     // NaN fails both comparisons and maps to 0 rather than to garbage.
     float clamped = intensity > 0.0f ? (intensity < 1.0f ? intensity : 1.0f) : 0.0f;
-    float corrected = gamma == 1.0f ? clamped : std::pow(clamped, 1.0f / gamma);
+    float corrected = gamma == 1.0f ? clamped : power(clamped, 1.0f / gamma);
     return static_cast<unsigned char>(std::lround(255.0f * corrected));
 }
 

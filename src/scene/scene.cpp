@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/portable_math.hpp"
 #include "geometry/creased_normals.hpp"
 #include "geometry/mesh_formats.hpp"
 #include "litkit/shapes.hpp"
@@ -82,10 +83,24 @@ bool same_geometry(const SceneObject& a, const SceneObject& b) {
 glm::mat4 object_to_world(const SceneObject& object) {
     // docs/spec.md §2: world = T(position) · Rz · Ry · Rx · S(scale); each glm call
     // multiplies on the right, so the calls read in the formula's order.
+    // Each rotation's sine and cosine from the angle in degrees, in double,
+    // rounded once to float (core/portable_math.hpp): the same bits in every
+    // build, exact for whole turns (10000° is 280°) and right angles.
+    const auto rotation = [](float degrees, int axis) {
+        const SineCosine angle = sin_cos_degrees(degrees);
+        const auto s = static_cast<float>(angle.sine), c = static_cast<float>(angle.cosine);
+        const int next = (axis + 1) % 3, after = (axis + 2) % 3;  // right-handed: x→y→z→x
+        glm::mat4 turn(1.0f);                                     // column-major: turn[column][row]
+        turn[next][next] = c;
+        turn[next][after] = s;
+        turn[after][next] = -s;
+        turn[after][after] = c;
+        return turn;
+    };
     glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
-    transform = glm::rotate(transform, glm::radians(object.rotation_degrees.z), {0.0f, 0.0f, 1.0f});
-    transform = glm::rotate(transform, glm::radians(object.rotation_degrees.y), {0.0f, 1.0f, 0.0f});
-    transform = glm::rotate(transform, glm::radians(object.rotation_degrees.x), {1.0f, 0.0f, 0.0f});
+    transform = transform * rotation(object.rotation_degrees.z, 2);
+    transform = transform * rotation(object.rotation_degrees.y, 1);
+    transform = transform * rotation(object.rotation_degrees.x, 0);
     return glm::scale(transform, glm::vec3(object.scale));
 }
 

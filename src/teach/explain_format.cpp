@@ -10,6 +10,7 @@
 
 #include "core/json.hpp"
 #include "core/scale_free.hpp"
+#include "core/portable_math.hpp"
 #include "teach/explain_text.hpp"
 
 namespace litkit {
@@ -54,9 +55,10 @@ std::string evaluation_lines(const PointEvaluation& point, const Scene& scene,
             text += "   (d = " + num(glm::length(point_light->position - point.position)) + ")";
         } else if (const auto* spot = std::get_if<SpotLight>(&light.kind)) {
             const float c = -glm::dot(terms.to_light, scale_free::unit(spot->direction));
-            text += "   (d = " + num(glm::length(spot->position - point.position)) +
-                    ", c = " + num(c) +
-                    ", cos(cutoff) = " + num(std::cos(glm::radians(spot->cutoff_degrees))) + ")";
+            text +=
+                "   (d = " + num(glm::length(spot->position - point.position)) + ", c = " + num(c) +
+                ", cos(cutoff) = " + num(static_cast<float>(cos_degrees(spot->cutoff_degrees))) +
+                ")";
         }
         text += "\n";
         text += indent + "  N.L = " + num(glm::dot(point.normal, terms.to_light)) +

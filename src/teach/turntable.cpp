@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/files.hpp"
+#include "core/portable_math.hpp"
 #include "litkit/error.hpp"
 
 namespace litkit {
@@ -21,8 +22,8 @@ Observer orbit(const Observer& observer, double degrees) {
     // in double so that frame k of N lands where k·360°/N says.
     const glm::dvec3 axis = glm::normalize(glm::dvec3(observer.up));
     const glm::dvec3 offset = glm::dvec3(observer.position) - glm::dvec3(observer.look_at);
-    const double radians = degrees * (3.14159265358979323846 / 180.0);
-    const double c = std::cos(radians), s = std::sin(radians);
+    const SineCosine angle = sin_cos_degrees(degrees);  // the same bits in every build
+    const double c = angle.cosine, s = angle.sine;
     const glm::dvec3 turned =
         offset * c + glm::cross(axis, offset) * s + axis * glm::dot(axis, offset) * (1.0 - c);
     Observer result = observer;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <utility>
 
+#include "geometry/corner_angle.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/refraction.hpp"
 
@@ -26,7 +27,11 @@ constexpr float least_weight = 1.0f / 1024.0f;
 
 float largest(const glm::vec3& v) { return std::max({v.x, v.y, v.z}); }
 
-float degrees_of(float cosine) { return glm::degrees(std::acos(std::clamp(cosine, -1.0f, 1.0f))); }
+// acos in degrees, by corner_angle rather than acosf: the same bits in every build.
+float degrees_of(float cosine) {
+    const double c = std::clamp(cosine, -1.0f, 1.0f);
+    return static_cast<float>(glm::degrees(corner_angle(std::sqrt(1.0 - c * c), c)));
+}
 
 // I of the model at p with unit N and unit V (docs/spec.md §4), unclamped.
 glm::vec3 shade(Reflection reflection, std::span<const equations::PreparedLight> lights,

@@ -216,3 +216,48 @@ def test_the_triangle_budget_is_the_clis():
     assert str(raised.value).splitlines() == [
         line for line in result.stderr.splitlines() if "error: " in line]
     assert "triangle" in raised.value.message
+
+
+def test_checks_reads_text_and_check_reads_files(tmp_path):
+    # The same broken text given as text and as a file: the same error, at
+    # the same place (line 3, the unclosed table header), named after its source.
+    text = "[room]\nwidth = 10\n[observer\n"
+    with pytest.raises(litkit.IoError) as from_text:
+        litkit.checks(text, name="mine.toml")
+    assert isinstance(from_text.value, litkit.Error)
+    assert (from_text.value.file, from_text.value.line) == ("mine.toml", 3)
+    path = write(tmp_path, text, "mine.toml")
+    with pytest.raises(litkit.IoError) as from_file:
+        litkit.check(path)
+    assert (from_file.value.file, from_file.value.line) == (str(path), 3)
+    assert str(from_text.value).replace("mine.toml", str(path)) == str(from_file.value)
+    assert [str(from_file.value)] == errors_printed_by_check(path)
+    # Without a name the text is "<string>".
+    with pytest.raises(litkit.IoError) as unnamed:
+        litkit.checks("[room\n")
+    assert (unnamed.value.file, unnamed.value.line) == ("<string>", 1)
+
+
+def test_checks_lists_every_problem_and_returns_the_warnings(tmp_path):
+    text = VALID.replace("width = 80", "width = 0").replace("size = 2", "size = -2")
+    with pytest.raises(litkit.SceneError) as raised:
+        litkit.checks(text)
+    assert [(d.file, d.line) for d in raised.value.diagnostics] == [
+        ("<string>", line_of(text, "width = 0")), ("<string>", line_of(text, "size = -2"))]
+    assert [str(d).replace("<string>", str(tmp_path / "s.toml")) for d in raised.value.diagnostics] \
+        == errors_printed_by_check(write(tmp_path, text, "s.toml"))
+    no_lights = VALID.split("[[lights]]")[0] + VALID.split("intensity = 9\n")[1]
+    warnings = litkit.checks(no_lights)
+    assert warnings and all(w.severity == "warning" and w.file == "<string>" for w in warnings)
+    # A dict is checked as loads reads it.
+    with pytest.raises(litkit.SceneError) as from_dict:
+        litkit.checks({"room": {"width": 10, "height": 10, "depth": -20}})
+    assert from_dict.value.file == "<dict>"
+
+
+def test_check_of_text_says_to_use_checks():
+    with pytest.raises(litkit.IoError) as raised:
+        litkit.check("[room\n")
+    assert raised.value.message.startswith("cannot read '[room")  # a path, as check reads it
+    notes = getattr(raised.value, "__notes__", [])
+    assert any("litkit.checks" in note for note in notes) or not hasattr(raised.value, "add_note")

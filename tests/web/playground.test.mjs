@@ -136,6 +136,25 @@ try {
                  litkitRender(litkit, await editorText(), args, exampleMeshes), `${reflection}/${shading}`);
     });
   }
+  // tests/web/turned.toml: rotations by 10000°, −1234.567° and 1e6°, shininess 10000, odd
+  // powers (a spot's exponent 1.7, shininess 37.3), where sinf, cosf and powf of glibc and of
+  // emscripten's musl can round differently; flat and gouraud shade on the scalar path.
+  await check("large rotations and high shininess equal `litkit render`, every model with a power " +
+              "under every shading", async () => {
+    await typeText(fs.readFileSync(path.join(root, "tests", "web", "turned.toml"), "utf8"));
+    const failures = [];
+    for (const reflection of ["phong", "blinn-phong", "toon", "minnaert", "cook-torrance"]) {
+      await choose("#reflection", reflection);
+      for (const shading of ["flat", "gouraud", "phong"]) {
+        await choose("#shading", shading);
+        const args = ["--reflection", reflection, "--shading", shading];
+        const d = difference(await canvasPixels(page, "picture"),
+                             litkitRender(litkit, await editorText(), args));
+        if (d) failures.push(`${reflection}/${shading}: ${d}`);
+      }
+    }
+    expect(failures.length === 0, failures.join("; "));
+  });
   await choose("#reflection", "");
   await choose("#shading", "");
 

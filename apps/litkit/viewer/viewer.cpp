@@ -103,7 +103,7 @@ struct KeyModel {
     SDL_Keycode key;
     litkit::Shading shading;
 };
-// F/G/P (and D when faceted shading lands): docs/spec.md §9.4.
+// F/G/P/D: docs/spec.md §9.4.
 constexpr KeyModel shading_keys[] = {
     {SDLK_f, litkit::Shading::Flat},
     {SDLK_g, litkit::Shading::Gouraud},
