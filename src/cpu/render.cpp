@@ -5,13 +5,13 @@
 #include "litkit/error.hpp"
 #include "litkit/validate.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
 
+#include "core/portable_math.hpp"
 #include "cpu/pipeline.hpp"
 #include "scene/float_range.hpp"
 
@@ -80,7 +80,7 @@ void Pipeline::begin_frame(int width, int height) {
     for (std::size_t i = 0; i < background_row.size(); ++i) background_row[i] = background[i % 3];
     // docs/spec.md §11: a sample that sees nothing has L = (background/255)^γ.
     for (int c = 0; c < 3; ++c)
-        background_light[c] = std::pow(scene.output.background[c], scene.output.gamma);
+        background_light[c] = power(scene.output.background[c], scene.output.gamma);
     for (BandScratch& band_scratch : scratch)
         band_scratch.shaded_pixels = band_scratch.traced_rays = 0;
 }
