@@ -118,7 +118,8 @@ void bind_explain(py::module_& module) {
         [](const litkit::Scene& scene, int x, int y, std::optional<std::string> reflection,
            std::optional<std::string> shading, int threads) {
             return explain(scene, x, y,
-                           Overrides{std::move(reflection), std::move(shading), {}, {}}, threads);
+                           Overrides{std::move(reflection), std::move(shading), {}, {}, {}},
+                           threads);
         },
         py::arg("scene"), py::arg("x"), py::arg("y"), py::kw_only(),
         py::arg("reflection") = py::none(), py::arg("shading") = py::none(),
