@@ -7,6 +7,10 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 
 jobs=$(nproc)
+# LITKIT_WERROR=ON in the environment (.ci/run sets it) makes every compiler
+# warning in litkit's own code an error, in both trees.
+werror=()
+[ -z "${LITKIT_WERROR:-}" ] || werror=("-DLITKIT_WERROR=$LITKIT_WERROR")
 if [ "${1:-}" = "--sanitize" ]; then
   build=build-asan
   # -O1 -g1 (line tables only), not RelWithDebInfo's -O2 -g: half the
@@ -15,7 +19,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   # ASan and UBSan check the same at -O1 (if anything, -O2 removes more
   # accesses), and line tables are all that their reports' file:line needs.
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLITKIT_SANITIZE=ON \
-        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" > /dev/null
+        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "${werror[@]}" > /dev/null
   cmake --build "$build" -j "$jobs"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -24,7 +28,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   ctest --test-dir "$build" --output-on-failure -j "$jobs" -E '^install\.'
 else
   build=build
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${werror[@]}" > /dev/null
   cmake --build "$build" -j "$jobs"
   ctest --test-dir "$build" --output-on-failure -j "$jobs"
   # The playground page in headless Chromium against this build's litkit
