@@ -12,7 +12,8 @@
 # did it is kept in build-fuzz/artifacts-TARGET/ and printed. To replay one:
 #   build-fuzz/fuzz/fuzz_scene build-fuzz/artifacts-scene/crash-…
 # LITKIT_FUZZ_FLAGS adds libFuzzer options (docs/reliability.md: the
-# campaign's -runs=10000000 instead of a time).
+# campaign's -runs=10000000 beside the time); LITKIT_FUZZ_CORPUS keeps the
+# corpus in a folder of one's own (below).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -35,10 +36,13 @@ CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithD
   -DLITKIT_FUZZ=ON -DLITKIT_BUILD_TESTS=OFF "${werror[@]}" > /dev/null
 cmake --build "$build" -j "$(nproc)" --target "fuzz_$target"
 
-# A scratch corpus, new each run: the seeds, then what the fuzzer adds.
-corpus="$build/corpus-$target"
+# A scratch corpus, new each run: the seeds, then what the fuzzer adds. With
+# LITKIT_FUZZ_CORPUS=FOLDER, that folder instead, kept and added to (so that a
+# long campaign can go on where an earlier run stopped).
+corpus="${LITKIT_FUZZ_CORPUS:-$build/corpus-$target}"
 artifacts="$build/artifacts-$target"
-rm -rf "$corpus" "$artifacts"
+[ -n "${LITKIT_FUZZ_CORPUS:-}" ] || rm -rf "$corpus"
+rm -rf "$artifacts"
 mkdir -p "$corpus" "$artifacts"
 shopt -s globstar nullglob
 seeds=0
