@@ -8,7 +8,9 @@ cd "$(dirname "$0")/.."
 
 jobs=$(nproc)
 # LITKIT_WERROR=ON in the environment (.ci/run sets it) makes every compiler
-# warning in litkit's own code an error, in both trees.
+# warning in litkit's own code an error in the Release tree, the README's
+# build. Not in the sanitized tree: GCC's flow-based warnings change under
+# -fsanitize, and that tree has not been checked free of them.
 werror=()
 [ -z "${LITKIT_WERROR:-}" ] || werror=("-DLITKIT_WERROR=$LITKIT_WERROR")
 if [ "${1:-}" = "--sanitize" ]; then
@@ -19,7 +21,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   # ASan and UBSan check the same at -O1 (if anything, -O2 removes more
   # accesses), and line tables are all that their reports' file:line needs.
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLITKIT_SANITIZE=ON \
-        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "${werror[@]}" > /dev/null
+        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" > /dev/null
   cmake --build "$build" -j "$jobs"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
