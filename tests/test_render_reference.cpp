@@ -434,9 +434,12 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
         object.normals.value_or(scene.normals.value_or(litkit::Normals::Mean));
     if (!object.normals && normals == litkit::Normals::File && !is_mesh)
         normals = litkit::Normals::Mean;
-    std::optional<float> crease =
+    const std::optional<float> crease =
         object.crease_angle_degrees ? object.crease_angle_degrees : scene.crease_angle_degrees;
-    if (crease && *crease >= 180.0f) crease.reset();
+    // What n̂_f·n̂_g must exceed for face g to count at a corner of face f:
+    // -2 (every face) without a crease or with one of 180.
+    const double limit =
+        crease && *crease < 180.0f ? std::cos(double(*crease) * std::numbers::pi / 180.0) : -2.0;
 
     if (normals == litkit::Normals::File) {
         // The file's normals, turned as the object is (world = T·R·S, S uniform).
@@ -482,7 +485,6 @@ RefObject prepare_object(const litkit::Scene& scene, const litkit::SceneObject& 
                 corners_of_group[group[t[c]]].push_back(3 * k + c);
             }
         }
-        const double limit = crease ? std::cos(double(*crease) * std::numbers::pi / 180.0) : -2.0;
         for (std::size_t k = 0; k < ref.triangles.size(); ++k)
             for (int c = 0; c < 3; ++c) {
                 dvec3 sum(0.0);

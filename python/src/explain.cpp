@@ -127,9 +127,9 @@ void bind_explain(py::module_& module) {
         "_explain",
         [](const litkit::Scene& scene, int x, int y, std::optional<std::string> reflection,
            std::optional<std::string> shading, std::optional<int> samples, int threads) {
-            Overrides overrides{std::move(reflection), std::move(shading), {}, {}};
-            overrides.samples = samples;
-            return explain(scene, x, y, overrides, threads);
+            return explain(
+                scene, x, y,
+                Overrides{std::move(reflection), std::move(shading), {}, {}, {}, samples}, threads);
         },
         py::arg("scene"), py::arg("x"), py::arg("y"), py::kw_only(),
         py::arg("reflection") = py::none(), py::arg("shading") = py::none(),

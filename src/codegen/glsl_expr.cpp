@@ -151,6 +151,9 @@ std::string parenthesised(const Printed& printed, bool needed) {
     return needed ? "(" + printed.text + ")" : printed.text;
 }
 
+// Printer writes std::string("…") + a temporary, not a bare literal: GCC 12
+// warns falsely (-Wrestrict, GCC bug 105329) on a literal + a temporary
+// std::string.
 class Printer {
   public:
     Printer(const PrintOptions& options, const std::unordered_map<const Node*, std::string>& names)
@@ -183,22 +186,24 @@ class Printer {
             case Op::Negate: {
                 // "-(-x)", never "--x".
                 const Printed operand = arg(0);
-                return {"-" + parenthesised(operand, operand.precedence <= unary), unary};
+                return {std::string("-") + parenthesised(operand, operand.precedence <= unary),
+                        unary};
             }
             case Op::Select:
-                return {"(" + arg(0).text + " ? " + arg(1).text + " : " + arg(2).text + ")",
+                return {std::string("(") + arg(0).text + " ? " + arg(1).text + " : " + arg(2).text +
+                            ")",
                         atomic};
             case Op::Max:
-                return {"max(" + arg(0).text + ", " + arg(1).text + ")", atomic};
+                return {std::string("max(") + arg(0).text + ", " + arg(1).text + ")", atomic};
             case Op::Pow:
                 return {options_.pow_function + "(" + arg(0).text + ", " + arg(1).text + ")",
                         atomic};
             case Op::Sqrt:
-                return {"sqrt(" + arg(0).text + ")", atomic};
+                return {std::string("sqrt(") + arg(0).text + ")", atomic};
             case Op::Min:
-                return {"min(" + arg(0).text + ", " + arg(1).text + ")", atomic};
+                return {std::string("min(") + arg(0).text + ", " + arg(1).text + ")", atomic};
             case Op::Floor:
-                return {"floor(" + arg(0).text + ")", atomic};
+                return {std::string("floor(") + arg(0).text + ")", atomic};
         }
         throw std::logic_error("glsl::Printer: unknown operation");
     }
@@ -274,7 +279,8 @@ Statements statements(std::span<const Output> outputs, std::span<const Hint> hin
     int unnamed = 0;
     const auto next_unnamed = [&] {
         std::string name;
-        do name = "t" + std::to_string(unnamed++);
+        // std::string("t"): as in Printer.
+        do name = std::string("t") + std::to_string(unnamed++);
         while (taken.count(name) != 0);
         return unique(name);
     };

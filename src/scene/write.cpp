@@ -23,13 +23,16 @@ std::string number(float value) {
     return text;
 }
 
+// std::string("…") + a temporary, not a bare literal: GCC 12 warns falsely
+// (-Wrestrict, GCC bug 105329) on a literal + a temporary std::string.
 std::string vec3(const glm::vec3& v) {
-    return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+    return std::string("[") + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
 }
 
 std::string color(const glm::vec3& unit) {
     auto channel = [](float c) { return std::to_string(std::lround(c * 255.0f)); };
-    return "[" + channel(unit.x) + ", " + channel(unit.y) + ", " + channel(unit.z) + "]";
+    return std::string("[") + channel(unit.x) + ", " + channel(unit.y) + ", " + channel(unit.z) +
+           "]";
 }
 
 std::string rgb8(const Rgb8& c) {

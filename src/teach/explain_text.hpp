@@ -24,13 +24,16 @@ inline std::string num(float value) {
     return error == std::errc() ? std::string(buffer, end) : "?";
 }
 
+// std::string("…") + a temporary, not a bare literal: GCC 12 warns falsely
+// (-Wrestrict, GCC bug 105329) on a literal + a temporary std::string.
 inline std::string vec(const glm::vec3& v) {
-    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+    return std::string("(") + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
 }
 
 // A vector as a JSON array (core/json.hpp: a non-finite component is null).
 inline std::string json_vec(const glm::vec3& v) {
-    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
+    return std::string("[") + json::number(v.x) + ", " + json::number(v.y) + ", " +
+           json::number(v.z) + "]";
 }
 
 // "objects[2] 'lens' (sphere)".

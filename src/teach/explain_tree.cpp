@@ -55,12 +55,14 @@ std::vector<glm::vec3> subtree_totals(const std::vector<RayNode>& tree) {
     return total;
 }
 
-// The first line of a node: which ray, and what it met.
+// The first line of a node: which ray, and what it met. (std::string("…") +
+// a temporary, not a bare literal: GCC 12 warns falsely, -Wrestrict, GCC bug
+// 105329, on a literal + a temporary std::string.)
 std::string headline(const RayNode& n, std::size_t index, const Scene& scene) {
-    std::string text = "#" + std::to_string(index) + " " + kind_name(n.kind) + " ray, depth " +
-                       std::to_string(n.depth) + ", " +
-                       (n.inside ? "inside " + object_label(scene, n.object) : "in the room") +
-                       ": ";
+    std::string text =
+        std::string("#") + std::to_string(index) + " " + kind_name(n.kind) + " ray, depth " +
+        std::to_string(n.depth) + ", " +
+        (n.inside ? std::string("inside ") + object_label(scene, n.object) : "in the room") + ": ";
     switch (n.outcome) {
         case RayNode::Outcome::Surface:
             return text + "hits opaque " + object_label(scene, n.object) + ", triangle " +
