@@ -291,12 +291,15 @@ class Reader {
     }
 
     void read_element(const Element& element) {
-        const std::uint64_t room = bytes_.size() - header_.body;
+        if (!ascii_ && header_.format == Header::Format::Ascii)
+            ascii_.emplace(bytes_, header_.body, header_.body_line);
+        const std::size_t here = ascii_ ? ascii_->offset() : at_;
+        const std::uint64_t room = bytes_.size() - here;
         const std::uint64_t least = least_item_size(element);
         if (element.count > (room + 1) / least)
             fail(element.place, "the header declares " + plural(element.count, element.name) +
                                     " of at least " + plural(least, "byte") + " each, but only " +
-                                    plural(room, "byte") + " follow the header");
+                                    plural(room, "byte") + " are left for them");
         if (element.name == "vertex" && element.count == vertex_count_) {
             mesh_.positions.reserve(element.count);
             if (has_normals_) mesh_.file_normals.reserve(element.count);

@@ -149,22 +149,25 @@ class AsciiReader {
     Mesh mesh_;
 };
 
-bool starts_with_solid(std::string_view bytes) {
+// ASCII: "solid" first, and no zero byte where a binary file has its count
+// (whose high byte is zero below 16,777,216 triangles): binary files whose
+// free header starts with "solid" are common.
+bool is_ascii(std::string_view bytes) {
     MeshWords words(bytes.substr(0, 512));
-    return words.next_word().text == "solid";
+    return words.next_word().text == "solid" &&
+           bytes.substr(0, binary_header_bytes).find('\0') == std::string_view::npos;
 }
 
 }  // namespace
 
 Mesh parse_stl(std::string_view bytes, const std::string& name,
                std::vector<std::uint32_t>* face_lines) {
-    // A binary file's size is fixed by its count; some binary files start
-    // with "solid" too, so the size decides first.
+    // A binary file's size is fixed by its count: that decides first.
     if (bytes.size() >= binary_header_bytes) {
         const std::uint64_t count = BinaryBytes{bytes}.read<std::uint32_t>(80);
         const std::uint64_t expected = binary_header_bytes + binary_triangle_bytes * count;
         if (expected == bytes.size()) return parse_binary(bytes, name);
-        if (!starts_with_solid(bytes))
+        if (!is_ascii(bytes))
             throw IoError(name,
                           "binary STL: the count at byte 80 says " + std::to_string(count) +
                               " triangles, which take 84 + 50 × " + std::to_string(count) + " = " +
@@ -172,7 +175,7 @@ Mesh parse_stl(std::string_view bytes, const std::string& name,
                               std::to_string(bytes.size()) +
                               (expected > bytes.size() ? " (it is cut short)" : ""),
                           FileLoc{name});
-    } else if (!starts_with_solid(bytes)) {
+    } else if (!is_ascii(bytes)) {
         throw IoError(name,
                       "not an STL file: it neither starts with 'solid' (ASCII) nor holds the "
                       "84-byte header of a binary STL",
