@@ -303,6 +303,18 @@ TEST(Gltf, BadFilesNameThePlaceOfTheirError) {
     text.replace(text.find(R"("byteLength": 36})"), 17, R"("byteLength": 4294967296})");
     expect_io_error([&] { litkit::load_gltf(write_file("claimed.gltf", text)); },
                     "File size mismatch");
+    // Nesting is bounded before tinygltf, which reads extras recursively, sees it.
+    const std::string prefix = R"({"asset": {"version": "2.0"}, "extras": )";
+    expect_io_error(
+        [&] {
+            litkit::load_gltf(write_file(
+                "deep.gltf", prefix + std::string(100000, '[') + std::string(100000, ']') + "}"));
+        },
+        "the JSON nests deeper than 64 levels (byte " + std::to_string(prefix.size() + 63) + ")");
+    expect_io_error(
+        read("draco", corner_triangle(),
+             R"("extensionsRequired": ["KHR_draco_mesh_compression"], )" + triangle_members("")),
+        "extensionsRequired: 'KHR_draco_mesh_compression' compresses the meshes");
     expect_io_error([&] { litkit::load_gltf(write_file("garbage.gltf", "hello")); },
                     "not a valid glTF file");
     expect_io_error(

@@ -18,6 +18,7 @@
 #include <new>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "core/files.hpp"
@@ -30,11 +31,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The most triangles one file may make once its meshes are placed by every
-// node that names them: the scene's default triangle budget (scene.hpp's
-// default_triangle_budget), which also keeps a small file whose nodes name
-// one large mesh many times from exhausting memory.
-constexpr std::uint64_t max_triangles = 64'000'000;
+constexpr std::uint64_t max_triangles = max_mesh_file_triangles;
+
+// Deeper JSON is refused before it is parsed: tinygltf reads `extras` and
+// `extensions` values recursively, one stack frame per level. glTF's own
+// members nest 6 levels deep.
+constexpr int max_json_depth = 64;
+
+// The first place where the JSON text nests deeper than max_json_depth, or
+// npos.
+std::size_t too_deep(std::string_view json) {
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t at = 0; at < json.size(); ++at) {
+        const char c = json[at];
+        if (in_string) {
+            if (c == '\\')
+                ++at;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max_json_depth) return at;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string_view::npos;
+}
 
 // Buffer files, read through tinygltf's file-system callbacks: only from
 // the glTF file's folder and below, within the read limit in all.
@@ -108,6 +133,12 @@ class Extractor {
     Extractor(const tinygltf::Model& model, const std::string& name) : model_(model), name_(name) {}
 
     Mesh extract() {
+        for (const std::string& extension : model_.extensionsRequired)
+            if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression")
+                fail("extensionsRequired",
+                     "'" + extension +
+                         "' compresses the meshes, which litkit does not read: export the file "
+                         "without mesh compression");
         if (model_.scenes.empty())
             fail("scenes", "the file has no scene (litkit draws the meshes of its default scene)");
         std::size_t scene = 0;
@@ -209,11 +240,13 @@ class Extractor {
         return matrix;
     }
 
-    // An accessor's elements as doubles, `components` per element: checked
-    // against its buffer view and buffer, normalised integers mapped to
-    // [-1, 1] or [0, 1] (glTF 2.0 §3.11), sparse values applied.
-    std::vector<double> read_accessor(int accessor_index, const std::string& where, int type,
-                                      bool integers) const {
+    // An accessor's elements, `components` per element, as floats (or, for
+    // indices, 32-bit integers: no wider than their data): checked against
+    // its buffer view and buffer, normalised integers mapped to [-1, 1] or
+    // [0, 1] (glTF 2.0 §3.11), sparse values applied.
+    template <typename T>
+    std::vector<T> read_accessor(int accessor_index, const std::string& where, int type) const {
+        constexpr bool integers = std::is_same_v<T, std::uint32_t>;
         if (accessor_index < 0 ||
             static_cast<std::size_t>(accessor_index) >= model_.accessors.size())
             fail(where, "accessor " + std::to_string(accessor_index) +
@@ -246,7 +279,7 @@ class Extractor {
         if (count > max_input_file_bytes / element_size)
             fail(place, "its count " + std::to_string(count) +
                             " is beyond what litkit reads (the files' read limit)");
-        std::vector<double> values(count * components, 0.0);
+        std::vector<T> values(count * components, T{});
         auto read_from = [&](int view_index, std::uint64_t offset, std::uint64_t elements,
                              std::size_t size, const std::string& what,
                              bool stride_allowed) -> std::pair<const unsigned char*, std::size_t> {
@@ -321,8 +354,8 @@ class Extractor {
                                                    element_size, place, /*stride_allowed=*/true);
             for (std::size_t e = 0; e < count; ++e)
                 for (std::size_t c = 0; c < components; ++c)
-                    values[e * components + c] = component(start + e * stride + c * component_size,
-                                                           component_type, normalized);
+                    values[e * components + c] = static_cast<T>(component(
+                        start + e * stride + c * component_size, component_type, normalized));
         }
         if (accessor.sparse.isSparse) {
             const auto& sparse = accessor.sparse;
@@ -357,14 +390,14 @@ class Extractor {
                              " is beyond the accessor's " + std::to_string(count) + " elements");
                 const auto element = static_cast<std::size_t>(target);
                 for (std::size_t c = 0; c < components; ++c)
-                    values[element * components + c] =
+                    values[element * components + c] = static_cast<T>(
                         component(replacements + s * value_stride + c * component_size,
-                                  component_type, normalized);
+                                  component_type, normalized));
             }
         }
-        if (!integers)
+        if constexpr (!integers)
             for (std::size_t i = 0; i < values.size(); ++i)
-                if (!std::isfinite(static_cast<float>(values[i])))
+                if (!std::isfinite(values[i]))
                     fail(place, "element " + std::to_string(i / components) +
                                     " has a coordinate that is not a finite number");
         return values;
@@ -393,15 +426,20 @@ class Extractor {
             const auto position_attribute = primitive.attributes.find("POSITION");
             if (position_attribute == primitive.attributes.end())
                 fail(where + ".attributes", "has no POSITION");
-            const std::vector<double> positions =
-                read_accessor(position_attribute->second, where + ".attributes.POSITION",
-                              TINYGLTF_TYPE_VEC3, false);
+            // The triangle budget, from the counts, before anything is read.
+            const int counted =
+                primitive.indices >= 0 ? primitive.indices : position_attribute->second;
+            if (counted >= 0 && static_cast<std::size_t>(counted) < model_.accessors.size())
+                check_budget(model_.accessors[static_cast<std::size_t>(counted)].count, mode,
+                             where);
+            const std::vector<float> positions = read_accessor<float>(
+                position_attribute->second, where + ".attributes.POSITION", TINYGLTF_TYPE_VEC3);
             const std::size_t vertex_count = positions.size() / 3;
-            std::vector<double> normals;
+            std::vector<float> normals;
             if (const auto found = primitive.attributes.find("NORMAL");
                 found != primitive.attributes.end()) {
-                normals = read_accessor(found->second, where + ".attributes.NORMAL",
-                                        TINYGLTF_TYPE_VEC3, false);
+                normals = read_accessor<float>(found->second, where + ".attributes.NORMAL",
+                                               TINYGLTF_TYPE_VEC3);
                 if (normals.size() != positions.size())
                     fail(where + ".attributes.NORMAL", "has " + std::to_string(normals.size() / 3) +
                                                            " elements, POSITION " +
@@ -409,16 +447,16 @@ class Extractor {
             }
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
-                const std::vector<double> indices = read_accessor(
-                    primitive.indices, where + ".indices", TINYGLTF_TYPE_SCALAR, true);
+                const std::vector<std::uint32_t> indices = read_accessor<std::uint32_t>(
+                    primitive.indices, where + ".indices", TINYGLTF_TYPE_SCALAR);
                 order.reserve(indices.size());
                 for (std::size_t i = 0; i < indices.size(); ++i) {
-                    if (indices[i] >= static_cast<double>(vertex_count))
+                    if (indices[i] >= vertex_count)
                         fail(where + ".indices",
-                             "index " + std::to_string(static_cast<std::uint64_t>(indices[i])) +
-                                 " (element " + std::to_string(i) + ") is beyond the " +
+                             "index " + std::to_string(indices[i]) + " (element " +
+                                 std::to_string(i) + ") is beyond the " +
                                  std::to_string(vertex_count) + " vertices of its POSITION");
-                    order.push_back(static_cast<std::uint32_t>(indices[i]));
+                    order.push_back(indices[i]);
                 }
             } else {
                 order.resize(vertex_count);
@@ -429,16 +467,23 @@ class Extractor {
         }
     }
 
-    void add_primitive(const std::vector<double>& positions, const std::vector<double>& normals,
-                       const std::vector<std::uint32_t>& order, int mode, const glm::dmat4& world,
-                       const glm::dmat3& normal_matrix, bool mirrored, const std::string& where) {
-        const std::size_t count = order.size();
-        const std::size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? count / 3
-                                      : count >= 3                    ? count - 2
-                                                                      : 0;
+    void check_budget(std::uint64_t count, int mode, const std::string& where) const {
+        const std::uint64_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? count / 3
+                                        : count >= 3                    ? count - 2
+                                                                        : 0;
         if (mesh_.triangles.size() + triangles > max_triangles)
             fail(where, "the file's meshes, placed by its nodes, make more than " +
                             std::to_string(max_triangles) + " triangles");
+    }
+
+    void add_primitive(const std::vector<float>& positions, const std::vector<float>& normals,
+                       const std::vector<std::uint32_t>& order, int mode, const glm::dmat4& world,
+                       const glm::dmat3& normal_matrix, bool mirrored, const std::string& where) {
+        const std::size_t count = order.size();
+        check_budget(count, mode, where);
+        const std::size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? count / 3
+                                      : count >= 3                    ? count - 2
+                                                                      : 0;
         if (mesh_.positions.size() + positions.size() / 3 >
             std::numeric_limits<std::uint32_t>::max())
             fail(where, "the file's meshes have too many vertices");
@@ -507,6 +552,18 @@ Mesh parse_gltf(std::string_view bytes, const fs::path& path) {
     std::string warnings;
     bool loaded = false;
     const bool binary = bytes.substr(0, 4) == "glTF";
+    // GLB: the JSON chunk's length at byte 12, its text from byte 20.
+    std::string_view json = bytes;
+    if (binary) {
+        std::uint32_t length = 0;
+        if (bytes.size() >= 16) std::memcpy(&length, bytes.data() + 12, 4);
+        json = bytes.size() >= 20 ? bytes.substr(20, length) : std::string_view();
+    }
+    if (const std::size_t deep = too_deep(json); deep != std::string_view::npos)
+        throw IoError(name,
+                      "the JSON nests deeper than " + std::to_string(max_json_depth) +
+                          " levels (byte " + std::to_string(deep + (binary ? 20 : 0)) + ")",
+                      FileLoc{name});
     try {
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
         const auto size = static_cast<unsigned int>(bytes.size());  // ≤ the read limit

@@ -41,6 +41,13 @@ struct MeshFormat {
 const MeshFormat& mesh_format(const std::filesystem::path& path,
                               std::optional<MeshFileFormat> format = std::nullopt);
 
+// The most triangles one PLY or glTF file may make (a PLY face of 255
+// corners makes 253 from 256 bytes; a glTF mesh may be placed by many
+// nodes): the scene's default triangle budget (scene.hpp's
+// default_triangle_budget, which counts no mesh file's triangles before
+// reading it), so that a small file cannot exhaust memory.
+inline constexpr std::uint64_t max_mesh_file_triangles = 64'000'000;
+
 // The readers over bytes already read, for the fuzz targets and the tests;
 // `name` is the file's name in messages. `face_lines`, when given, receives
 // the line of each face of a text file (nothing for a binary one).

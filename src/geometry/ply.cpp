@@ -439,6 +439,10 @@ class Reader {
         const auto face = static_cast<std::uint32_t>(face_count_++);
         if (face_lines_ && header_.format == Header::Format::Ascii)
             face_lines_->push_back(count.word.line);
+        if (mesh_.triangles.size() + (corners_.size() - 2) > max_mesh_file_triangles)
+            fail_value(count, element, item,
+                       "the file's faces make more than " +
+                           std::to_string(max_mesh_file_triangles) + " triangles");
         // docs/spec.md §2: the polygon (v0, v1, …, vk) becomes the fan (v0, vi, vi+1).
         for (std::size_t i = 1; i + 1 < corners_.size(); ++i) {
             mesh_.triangles.push_back({corners_[0], corners_[i], corners_[i + 1]});
