@@ -288,11 +288,23 @@ TEST(Gltf, BadFilesNameThePlaceOfTheirError) {
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]}], )" +
                              accessor),
                     "scenes[0]: the scene has no triangles (only points or lines");
+    // Counts of 4 G elements without data behind them: the triangles they
+    // would make are refused before anything is read; a normal's count
+    // beyond the read limit is refused too.
     expect_io_error(read("huge-count", corner_triangle(), R"(
         "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
         "accessors": [{"componentType": 5126, "count": 4294967295, "type": "VEC3"}])"),
-                    "(accessors[0]): its count 4294967295 is beyond what litkit reads");
+                    "meshes[0].primitives[0]: the file's meshes, placed by its nodes, make more "
+                    "than 64000000 triangles");
+    expect_io_error(read("huge-normals", corner_triangle(), R"(
+        "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                      {"componentType": 5126, "count": 4294967295, "type": "VEC3"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}])"),
+                    "meshes[0].primitives[0].attributes.NORMAL (accessors[1]): its count "
+                    "4294967295 is beyond what litkit reads");
     // A buffer that claims 4 GiB.
     const fs::path claimed = write_gltf("claimed", corner_triangle(), triangle_members(""));
     std::string text;
