@@ -4,8 +4,10 @@
 #   scene  the scene loader (fuzz/fuzz_scene.cpp), seeds: every .toml file
 #   obj    the OBJ reader and the normals of what it reads
 #          (fuzz/fuzz_obj.cpp), seeds: every .obj file
+#   ply, stl, gltf  the PLY, STL and glTF readers (fuzz/fuzz_mesh.cpp, one
+#          target each), seeds: the tree's files of that format
 #
-#   scripts/fuzz.sh [SECONDS] [scene|obj]      default 60 scene
+#   scripts/fuzz.sh [SECONDS] [scene|obj|ply|stl|gltf]      default 60 scene
 #
 # Prints how many inputs ran. Exits non-zero when the fuzzer found a crash,
 # a sanitizer report, a leak, a timeout or an out-of-memory; the input that
@@ -19,11 +21,11 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 target=${2:-scene}
 case "$seconds" in
-  '' | *[!0-9]*) echo "usage: $0 [SECONDS] [scene|obj]" >&2; exit 2 ;;
+  '' | *[!0-9]*) echo "usage: $0 [SECONDS] [scene|obj|ply|stl|gltf]" >&2; exit 2 ;;
 esac
 case "$target" in
-  scene | obj) ;;
-  *) echo "usage: $0 [SECONDS] [scene|obj]" >&2; exit 2 ;;
+  scene | obj | ply | stl | gltf) ;;
+  *) echo "usage: $0 [SECONDS] [scene|obj|ply|stl|gltf]" >&2; exit 2 ;;
 esac
 ./scripts/install-deps.sh --fuzz
 
@@ -46,11 +48,15 @@ rm -rf "$artifacts"
 mkdir -p "$corpus" "$artifacts"
 shopt -s globstar nullglob
 seeds=0
-if [ "$target" = scene ]; then
-  seed_files=(examples/**/*.toml tests/bad/**/*.toml tests/data/**/*.toml fuzz/seeds/*.toml)
-else
-  seed_files=(examples/**/*.obj tests/**/*.obj fuzz/seeds/*.obj)
-fi
+case "$target" in
+  scene) seed_files=(examples/**/*.toml tests/bad/**/*.toml tests/data/**/*.toml fuzz/seeds/*.toml) ;;
+  obj) seed_files=(examples/**/*.obj tests/**/*.obj fuzz/seeds/*.obj) ;;
+  ply) seed_files=(examples/**/*.ply tests/data/ply/* fuzz/seeds/ply/*) ;;
+  stl) seed_files=(examples/**/*.stl tests/data/stl/* fuzz/seeds/stl/*) ;;
+  gltf) seed_files=(examples/**/*.gltf tests/data/gltf/* fuzz/seeds/gltf/*) ;;
+esac
+dict=()
+[ -f "fuzz/$target.dict" ] && dict=(-dict="fuzz/$target.dict")
 for seed in "${seed_files[@]}"; do
   cp "$seed" "$corpus/${seed//\//_}"
   seeds=$((seeds + 1))
@@ -64,7 +70,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 status=0
 # shellcheck disable=SC2086 # LITKIT_FUZZ_FLAGS: several words
 "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=8192 -timeout=10 \
-  -rss_limit_mb=4096 -dict="fuzz/$target.dict" -artifact_prefix="$artifacts/" \
+  -rss_limit_mb=4096 "${dict[@]}" -artifact_prefix="$artifacts/" \
   -print_final_stats=1 ${LITKIT_FUZZ_FLAGS:-} "$corpus" > "$log" 2>&1 || status=$?
 
 # The full log is long (a line per new coverage); show the summary.

@@ -17,6 +17,9 @@ packages=(
   # .ci/run checks the sources' layout against .clang-format (scripts/check-format.sh).
   clang-format
   libglm-dev libtomlplusplus-dev libcli11-dev libpng-dev zlib1g-dev libdeflate-dev libtinyobjloader-dev
+  # glTF mesh files (src/geometry/gltf.cpp): tinygltf, compiled in from its
+  # header as tinyobjloader is, and the JSON parser it includes.
+  libtinygltf-dev nlohmann-json3-dev
   # PNG's default level deflated by ISA-L (src/core/image.cpp; a shared
   # library: Debian has no archive of it).
   libisal-dev

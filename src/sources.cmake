@@ -10,8 +10,9 @@ set(LITKIT_LAYER_SOURCES_lighting
     lighting/lighting.cpp)
 set(LITKIT_LAYER_SOURCES_geometry
     geometry/closed_mesh.cpp geometry/convex.cpp geometry/mesh_data.cpp geometry/mesh_formats.cpp geometry/normals.cpp
-    geometry/obj.cpp geometry/obj_numbers.cpp geometry/shapes.cpp geometry/teapot.cpp
-    geometry/tinyobjloader.cpp geometry/weld.cpp)
+    geometry/gltf.cpp geometry/obj.cpp geometry/obj_numbers.cpp geometry/ply.cpp geometry/shapes.cpp
+    geometry/stl.cpp geometry/teapot.cpp geometry/tinygltf.cpp geometry/tinyobjloader.cpp
+    geometry/weld.cpp)
 set(LITKIT_LAYER_SOURCES_scene
     scene/camera.cpp scene/default_scene.cpp scene/float_range.cpp scene/load.cpp
     scene/nesting.cpp scene/read_tables.cpp scene/read_values.cpp scene/scene.cpp scene/toml.cpp

@@ -316,15 +316,46 @@ TEST(Bounds, OfEmptyMeshAreZero) {
     expect_near(box.max, {0, 0, 0}, 0.0f);
 }
 
-// Mesh files are read by their extension's reader (geometry/mesh_formats.cpp);
-// OBJ is the only format, and reads a file of any other extension too.
+// Mesh files are read by their extension's reader (geometry/mesh_formats.cpp),
+// without regard to case; OBJ reads a file of any other extension too, and
+// an object's format key overrides the extension.
 TEST(MeshFormats, TheExtensionChoosesTheReaderWithoutRegardToCase) {
-    for (const char* name : {"a.obj", "b.OBJ", "c.Obj", "d.stl", "e", "f.obj.txt"}) {
-        const litkit::detail::MeshFormat& format = litkit::detail::mesh_format(name);
-        EXPECT_EQ(format.extension, ".obj") << name;
-        EXPECT_EQ(format.read, &litkit::load_obj) << name;
-        EXPECT_EQ(format.line_of_face, &litkit::line_of_face) << name;
+    using litkit::MeshFileFormat;
+    const std::pair<const char*, MeshFileFormat> cases[] = {
+        {"a.obj", MeshFileFormat::Obj},     {"b.OBJ", MeshFileFormat::Obj},
+        {"e", MeshFileFormat::Obj},         {"f.obj.txt", MeshFileFormat::Obj},
+        {"g.ply", MeshFileFormat::Ply},     {"h.PlY", MeshFileFormat::Ply},
+        {"d.stl", MeshFileFormat::Stl},     {"i.STL", MeshFileFormat::Stl},
+        {"j.gltf", MeshFileFormat::Gltf},   {"k.GLB", MeshFileFormat::Gltf},
+        {"dir.stl/l", MeshFileFormat::Obj}, {"m.ply.obj", MeshFileFormat::Obj},
+    };
+    for (const auto& [name, expected] : cases) {
+        EXPECT_EQ(litkit::mesh_file_format(name), expected) << name;
+        EXPECT_EQ(litkit::detail::mesh_format(name).format, expected) << name;
     }
+    EXPECT_EQ(litkit::detail::mesh_format("a.obj").read, &litkit::load_obj);
+    EXPECT_EQ(litkit::detail::mesh_format("a.obj").line_of_face, &litkit::line_of_face);
+    EXPECT_EQ(litkit::detail::mesh_format("a.ply").read, &litkit::load_ply);
+    EXPECT_EQ(litkit::detail::mesh_format("a.stl").read, &litkit::load_stl);
+    EXPECT_EQ(litkit::detail::mesh_format("a.glb").read, &litkit::load_gltf);
+}
+
+TEST(MeshFormats, AGivenFormatOverridesTheExtension) {
+    using litkit::MeshFileFormat;
+    EXPECT_EQ(litkit::detail::mesh_format("a.obj", MeshFileFormat::Stl).read, &litkit::load_stl);
+    EXPECT_EQ(litkit::detail::mesh_format("scan.txt", MeshFileFormat::Ply).read, &litkit::load_ply);
+    EXPECT_EQ(litkit::detail::mesh_format("a.ply", MeshFileFormat::Obj).read, &litkit::load_obj);
+}
+
+TEST(MeshFormats, NamesRoundTripInTheEnumerationsOrder) {
+    EXPECT_EQ(litkit::mesh_file_format_names.size(), 4u);
+    for (std::size_t i = 0; i < litkit::mesh_file_format_names.size(); ++i) {
+        const auto format = static_cast<litkit::MeshFileFormat>(i);
+        EXPECT_EQ(litkit::to_string(format), litkit::mesh_file_format_names[i]);
+        EXPECT_EQ(litkit::parse_mesh_file_format(litkit::mesh_file_format_names[i]), format);
+    }
+    EXPECT_EQ(litkit::parse_mesh_file_format("glb"), std::nullopt);
+    EXPECT_EQ(litkit::parse_mesh_file_format("PLY"), std::nullopt);
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include "litkit/limits.hpp"
 #include "litkit/mesh.hpp"
 #include "litkit/samples.hpp"
+#include "litkit/shapes.hpp"
 
 namespace litkit {
 
@@ -118,9 +119,11 @@ struct TeapotShape {
     /// Steps along each edge of a Bézier patch, 1–64.
     int subdivisions = 10;
 };
-/// A Wavefront OBJ file (load_obj).
+/// A mesh file (load_mesh_file): OBJ, PLY, STL or glTF.
 struct MeshFileShape {
     std::filesystem::path file;  ///< already resolved against the scene file's folder
+    /// The file's format; nothing: by the file's extension (mesh_file_format).
+    std::optional<MeshFileFormat> format;
 };
 /// A mesh given in memory, for scenes built in code: positions and triangles
 /// (counter-clockwise seen from outside), in the object's local coordinates

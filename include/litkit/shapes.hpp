@@ -6,9 +6,12 @@
 /// subdivisions below 1, a torus's minor radius not below its major radius).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 #include "litkit/mesh.hpp"
 
@@ -45,5 +48,58 @@ Mesh load_obj(const std::filesystem::path& path);
 /// as Mesh::triangle_faces numbers them), or 0 if the file cannot be read
 /// again. For placing errors.
 std::uint32_t line_of_face(const std::filesystem::path& path, std::size_t face_number);
+
+/// The mesh file formats (docs/scene-format.md, "Mesh files"): Wavefront
+/// OBJ, PLY (ASCII and binary), STL (ASCII and binary) and glTF 2.0 (.gltf
+/// and .glb).
+enum class MeshFileFormat {
+    Obj,  ///< "obj": load_obj
+    Ply,  ///< "ply": load_ply
+    Stl,  ///< "stl": load_stl
+    Gltf  ///< "gltf": load_gltf, for .gltf and .glb alike
+};
+/// The formats' scene-file names (an object's `format` key), in the
+/// enumeration's order.
+inline constexpr std::array<std::string_view, 4> mesh_file_format_names{"obj", "ply", "stl",
+                                                                        "gltf"};
+/// Scene-file spelling: the format's name in mesh_file_format_names.
+std::string_view to_string(MeshFileFormat format);
+/// The format a scene-file spelling names (exact, lower case), or nothing.
+std::optional<MeshFileFormat> parse_mesh_file_format(std::string_view text);
+/// The format of a file by its extension, without regard to case: .obj,
+/// .ply, .stl, .gltf and .glb; OBJ for any other extension, or none.
+MeshFileFormat mesh_file_format(const std::filesystem::path& path);
+/// Reads a mesh file in `format`, or in the format its extension names.
+/// Throws IoError as the format's reader does.
+Mesh load_mesh_file(const std::filesystem::path& path,
+                    std::optional<MeshFileFormat> format = std::nullopt);
+
+/// A PLY file (ASCII, binary little or big endian): the `vertex` element's
+/// x, y, z (and nx, ny, nz when all three are there, for normals = "file"),
+/// the `face` element's `vertex_indices` (or `vertex_index`) lists, each a
+/// polygon made a fan as OBJ's are. Other elements and properties are read
+/// past. Throws IoError, located at line:column (ASCII) or with the byte
+/// (binary), for a file that cannot be read, a header it does not
+/// understand, counts the data do not hold, a coordinate that is not finite,
+/// an index beyond the vertices, or no faces.
+Mesh load_ply(const std::filesystem::path& path);
+
+/// An STL file, ASCII or binary (binary when its size is that of the
+/// triangle count at byte 80, else ASCII when it starts with "solid"): each
+/// facet a triangle, its three corners positions of their own; the facet
+/// normals are not read. Throws IoError as load_ply does.
+Mesh load_stl(const std::filesystem::path& path);
+
+/// A glTF 2.0 file (.gltf, with buffers in data: URIs or in files beside it,
+/// or .glb): every triangle primitive (triangles, strips, fans) of every
+/// mesh of the default scene (else the first), placed by its nodes'
+/// matrices or translation, rotation and scale, as one mesh; the NORMAL
+/// attribute (for normals = "file"). Images, materials and animations are
+/// not read. Throws IoError naming the place in the file
+/// ("meshes[0].primitives[1].indices: ...") for a file that cannot be read,
+/// a buffer outside the file's folder, an accessor beyond its data, a
+/// coordinate that is not finite, an index beyond the vertices, or no
+/// triangles.
+Mesh load_gltf(const std::filesystem::path& path);
 
 }  // namespace litkit

@@ -92,7 +92,7 @@ const Family& object_family() {
                                    {"sphere", {"radius", "segments", "rings"}},
                                    {"torus", {"major_radius", "minor_radius", "segments", "sides"}},
                                    {"teapot", {"size", "subdivisions"}},
-                                   {"mesh", {"file"}},
+                                   {"mesh", {"file", "format"}},
                                }};
     return family;
 }
@@ -376,6 +376,8 @@ void SceneReader::read_object(const Site& site) {
                 mesh.file = path.is_absolute() ? path : file_->folder / path;
             }
         }
+        mesh.format = read_enum<MeshFileFormat>(site, "format", mesh_file_format_names,
+                                                "mesh file format", parse_mesh_file_format);
         object.shape = mesh;
     }
 }

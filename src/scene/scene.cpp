@@ -117,7 +117,7 @@ Mesh object_mesh(const SceneObject& object) {
             return make_teapot(teapot.size, teapot.subdivisions);
         }
         Mesh operator()(const MeshFileShape& mesh) const {
-            return detail::mesh_format(mesh.file).read(mesh.file);
+            return detail::mesh_format(mesh.file, mesh.format).read(mesh.file);
         }
         Mesh operator()(const MeshDataShape& data) const {
             if (!data.mesh) throw ArgumentError("an in-memory mesh (MeshDataShape) holds no mesh");
@@ -267,11 +267,11 @@ std::vector<glm::vec3> file_corner_normals(const Mesh& mesh, const SceneObject& 
 Diagnostic missing_file_normal_error(const MeshFileShape& file, const Mesh& mesh,
                                      std::size_t triangle) {
     const std::uint32_t face = mesh.triangle_faces[triangle];
-    const std::uint32_t line = detail::mesh_format(file.file).line_of_face(file.file, face);
+    const detail::MeshFormat& format = detail::mesh_format(file.file, file.format);
+    const std::uint32_t line = format.line_of_face(file.file, face);
     return Diagnostic{FileLoc{file.file.string(), line, 0}, Severity::Error,
-                      "face " + std::to_string(face + 1) +
-                          " has a corner without a normal (v/vt/vn or v//vn), which "
-                          "normals = \"file\" needs"};
+                      "face " + std::to_string(face + 1) + " has a corner without a normal (" +
+                          std::string(format.normals_hint) + "), which normals = \"file\" needs"};
 }
 
 std::optional<Diagnostic> check_file_normals(const MeshFileShape& file, const Mesh& mesh) {

@@ -44,7 +44,8 @@ std::string closed_mesh_problem(const SceneObject& object, const Mesh& mesh) {
     if (file && edge->triangle < mesh.triangle_faces.size()) {
         const std::uint32_t face = mesh.triangle_faces[edge->triangle];
         text += " (face " + std::to_string(face + 1);
-        const std::uint32_t line = mesh_format(file->file).line_of_face(file->file, face);
+        const std::uint32_t line =
+            mesh_format(file->file, file->format).line_of_face(file->file, face);
         if (line > 0) text += ", line " + std::to_string(line);
         text += ")";
     } else {

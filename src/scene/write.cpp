@@ -123,6 +123,8 @@ std::string object_text(const SceneObject& object, const std::filesystem::path& 
                     if (!relative.empty()) file = relative;
                 }
                 text += "type = \"mesh\"\nfile = " + quoted(file.generic_string()) + "\n";
+                if (shape.format)
+                    text += "format = " + quoted(std::string(to_string(*shape.format))) + "\n";
             }
         },
         object.shape);
