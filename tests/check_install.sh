@@ -3,7 +3,7 @@
 # project that finds it with find_package(litkit), from a fresh build folder.
 # Also checks what the package installs: exactly the public headers (each
 # one in litkit.hpp but gl_renderer.hpp, litkit::gl's own), the docs and the
-# examples; and that docs/cpp-api.md shows the consumer's program unchanged;
+# examples and the licence; and that docs/cpp-api.md shows the consumer's program unchanged;
 # and that the installed CLI finds its modules (lib/litkit): `--backend gl`
 # draws, and `litkit view` shows a scene in a window on a virtual display
 # (Xvfb).
@@ -47,6 +47,7 @@ for doc in "$source_dir"/docs/*.md; do
     test -f "$prefix/share/doc/litkit/$(basename "$doc")" || fail "$(basename "$doc") not installed"
 done
 test -f "$prefix/share/doc/litkit/README.md" || fail "README.md not installed"
+cmp -s "$source_dir/LICENSE" "$prefix/share/doc/litkit/LICENSE" || fail "LICENSE not installed"
 test -n "$(ls "$prefix/share/doc/litkit/images/"*.png)" || fail "docs/images not installed"
 for example in "$source_dir"/examples/*.toml; do
     test -f "$prefix/share/litkit/examples/$(basename "$example")" ||
