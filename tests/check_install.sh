@@ -3,7 +3,8 @@
 # project that finds it with find_package(litkit), from a fresh build folder.
 # Also checks what the package installs: exactly the public headers (each
 # one in litkit.hpp but gl_renderer.hpp, litkit::gl's own), the docs and the
-# examples and the licence; and that docs/cpp-api.md shows the consumer's program unchanged;
+# examples and the licence, the bash completion and pkg-config's litkit.pc
+# (a program built with its flags alone runs); and that docs/cpp-api.md shows the consumer's program unchanged;
 # and that the installed CLI finds its modules (lib/litkit): `--backend gl`
 # draws, and `litkit view` shows a scene in a window on a virtual display
 # (Xvfb).
@@ -56,6 +57,28 @@ done
 # An installed example renders with the installed CLI (its mesh files came along).
 "$prefix/bin/litkit" render "$prefix/share/litkit/examples/mesh.toml" -o "$scratch/mesh.png" \
     --width 80 --height 60 > /dev/null
+
+# Bash completion, where bash-completion looks (share/bash-completion/completions/COMMAND).
+cmp -s "$build/docs/litkit.bash-completion" "$prefix/share/bash-completion/completions/litkit" ||
+    fail "the bash completion is not installed as share/bash-completion/completions/litkit"
+
+# pkg-config: a program compiled and linked with `pkg-config --cflags --libs litkit` alone.
+pc=$(find "$prefix" -name litkit.pc)
+[ -n "$pc" ] || fail "litkit.pc is not installed"
+[ "$(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --modversion litkit)" = "$("$build/litkit" --version | head -n 1 | cut -d' ' -f2)" ] ||
+    fail "litkit.pc's version is not the program's"
+cat > "$scratch/pc.cpp" <<'PROGRAM'
+#include <litkit/render.hpp>
+#include <litkit/scene.hpp>
+#include <cstdio>
+int main() {
+    const litkit::Image image = litkit::render(litkit::default_scene());
+    std::printf("%dx%d\n", image.width, image.height);
+}
+PROGRAM
+c++ "$scratch/pc.cpp" -o "$scratch/pc" $(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs litkit) ||
+    fail "a program built with pkg-config's flags for litkit does not compile or link"
+[ "$("$scratch/pc")" = "800x600" ] || fail "the program built with pkg-config's flags did not render"
 
 cmake -S "$here/install_consumer" -B "$scratch/consumer" -G Ninja \
       -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
