@@ -18,12 +18,14 @@ xvfb_pid=
 trap 'test -z "$xvfb_pid" || kill "$xvfb_pid"; rm -rf "$scratch"' EXIT
 fail() { echo "check_install: $*" >&2; exit 1; }
 
-# docs/cpp-api.md's program is tests/install_consumer/main.cpp, to the byte.
+# docs/cpp-api.md's program is tests/install_consumer/main.cpp, to the byte
+# but for the file's licence line (scripts/spdx.sh), which the page leaves out.
 awk '/^<!-- program: tests\/install_consumer\/main.cpp -->$/ {marked = 1; next}
      marked && /^```cpp$/ {inside = 1; next}
      inside && /^```$/ {exit}
      inside {print}' "$source_dir/docs/cpp-api.md" > "$scratch/page.cpp"
-cmp -s "$scratch/page.cpp" "$here/install_consumer/main.cpp" ||
+grep -v '^// SPDX-License-Identifier: ' "$here/install_consumer/main.cpp" > "$scratch/main.cpp"
+cmp -s "$scratch/page.cpp" "$scratch/main.cpp" ||
     fail "docs/cpp-api.md does not show tests/install_consumer/main.cpp as it is"
 
 prefix=$scratch/prefix
