@@ -142,7 +142,7 @@ fi
 
 echo "litkit against a plain OpenGL program: $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "cpu:     ${cpu:-unknown}, $(nproc) hardware threads; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "litkit:  $("$litkit" --version) ($litkit)"
+echo "litkit:  $("$litkit" --version | head -n 1) ($litkit)"
 echo "CPU:     litkit --backend cpu --threads $threads"
 echo "GL:      litkit --backend gl: $gl_renderer; LP_NUM_THREADS=$LP_NUM_THREADS"
 echo "peer:    litkit_gl_peer (bench/gl_peer): $peer_renderer; LP_NUM_THREADS=$LP_NUM_THREADS"

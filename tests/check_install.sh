@@ -3,7 +3,8 @@
 # project that finds it with find_package(litkit), from a fresh build folder.
 # Also checks what the package installs: exactly the public headers (each
 # one in litkit.hpp but gl_renderer.hpp, litkit::gl's own), the docs and the
-# examples; and that docs/cpp-api.md shows the consumer's program unchanged;
+# examples and the licence, the bash completion and pkg-config's litkit.pc
+# (a program built with its flags alone runs); and that docs/cpp-api.md shows the consumer's program unchanged;
 # and that the installed CLI finds its modules (lib/litkit): `--backend gl`
 # draws, and `litkit view` shows a scene in a window on a virtual display
 # (Xvfb).
@@ -17,12 +18,14 @@ xvfb_pid=
 trap 'test -z "$xvfb_pid" || kill "$xvfb_pid"; rm -rf "$scratch"' EXIT
 fail() { echo "check_install: $*" >&2; exit 1; }
 
-# docs/cpp-api.md's program is tests/install_consumer/main.cpp, to the byte.
+# docs/cpp-api.md's program is tests/install_consumer/main.cpp, to the byte
+# but for the file's licence line (scripts/spdx.sh), which the page leaves out.
 awk '/^<!-- program: tests\/install_consumer\/main.cpp -->$/ {marked = 1; next}
      marked && /^```cpp$/ {inside = 1; next}
      inside && /^```$/ {exit}
      inside {print}' "$source_dir/docs/cpp-api.md" > "$scratch/page.cpp"
-cmp -s "$scratch/page.cpp" "$here/install_consumer/main.cpp" ||
+grep -v '^// SPDX-License-Identifier: ' "$here/install_consumer/main.cpp" > "$scratch/main.cpp"
+cmp -s "$scratch/page.cpp" "$scratch/main.cpp" ||
     fail "docs/cpp-api.md does not show tests/install_consumer/main.cpp as it is"
 
 prefix=$scratch/prefix
@@ -47,6 +50,7 @@ for doc in "$source_dir"/docs/*.md; do
     test -f "$prefix/share/doc/litkit/$(basename "$doc")" || fail "$(basename "$doc") not installed"
 done
 test -f "$prefix/share/doc/litkit/README.md" || fail "README.md not installed"
+cmp -s "$source_dir/LICENSE" "$prefix/share/doc/litkit/LICENSE" || fail "LICENSE not installed"
 test -n "$(ls "$prefix/share/doc/litkit/images/"*.png)" || fail "docs/images not installed"
 for example in "$source_dir"/examples/*.toml; do
     test -f "$prefix/share/litkit/examples/$(basename "$example")" ||
@@ -55,6 +59,28 @@ done
 # An installed example renders with the installed CLI (its mesh files came along).
 "$prefix/bin/litkit" render "$prefix/share/litkit/examples/mesh.toml" -o "$scratch/mesh.png" \
     --width 80 --height 60 > /dev/null
+
+# Bash completion, where bash-completion looks (share/bash-completion/completions/COMMAND).
+cmp -s "$build/docs/litkit.bash-completion" "$prefix/share/bash-completion/completions/litkit" ||
+    fail "the bash completion is not installed as share/bash-completion/completions/litkit"
+
+# pkg-config: a program compiled and linked with `pkg-config --cflags --libs litkit` alone.
+pc=$(find "$prefix" -name litkit.pc)
+[ -n "$pc" ] || fail "litkit.pc is not installed"
+[ "$(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --modversion litkit)" = "$("$build/litkit" --version | head -n 1 | cut -d' ' -f2)" ] ||
+    fail "litkit.pc's version is not the program's"
+cat > "$scratch/pc.cpp" <<'PROGRAM'
+#include <litkit/render.hpp>
+#include <litkit/scene.hpp>
+#include <cstdio>
+int main() {
+    const litkit::Image image = litkit::render(litkit::default_scene());
+    std::printf("%dx%d\n", image.width, image.height);
+}
+PROGRAM
+c++ "$scratch/pc.cpp" -o "$scratch/pc" $(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs litkit) ||
+    fail "a program built with pkg-config's flags for litkit does not compile or link"
+[ "$("$scratch/pc")" = "800x600" ] || fail "the program built with pkg-config's flags did not render"
 
 cmake -S "$here/install_consumer" -B "$scratch/consumer" -G Ninja \
       -DCMAKE_PREFIX_PATH="$prefix" > /dev/null

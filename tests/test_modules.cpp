@@ -256,7 +256,8 @@ TEST_F(Modules, ALibraryThatIsNotLitkitsModuleIsRefused) {
     fs::copy_file(library, installed("litkit-gl.so"));
     const auto render = run("render --backend gl --width 40 --height 30 -o picture.png");
     EXPECT_EQ(render.status, 1) << render.output;
-    const std::string version = run("--version").output;  // "litkit 0.1.0\n"
+    const std::string all = run("--version").output;  // "litkit 0.1.0\n\nSIMD kernels: ..."
+    const std::string version = all.substr(0, all.find('\n') + 1);  // "litkit 0.1.0\n"
     EXPECT_EQ(render.output, "error: " + installed("litkit-gl.so").string() +
                                  " is not a module of " + version.substr(0, version.size() - 1) +
                                  " (another build's?); install litkit again\n");

@@ -11,7 +11,7 @@ namespace {
 
 int run_check(const SceneArguments& arguments) {
     load(arguments);
-    std::cout << "ok\n";
+    say(std::cout) << "ok\n";
     return exit_success;
 }
 

@@ -39,6 +39,7 @@ int run_compare(const CompareArguments& arguments) {
     const fs::path output = arguments.output.empty() ? output_beside(files, "-compare.png")
                                                      : fs::path(arguments.output);
     refuse_to_overwrite_inputs(scene, files, output);
+    require_picture_name(output, {".png"}, "compare", "a PNG picture");
 
     litkit::CompareOptions options;
     options.tile_width = arguments.scene.width.value_or(0);
@@ -60,13 +61,13 @@ int run_compare(const CompareArguments& arguments) {
             names += (names.empty() ? "" : ", ") +
                      (name.empty() ? "objects[" + std::to_string(index) + "]" : "'" + name + "'");
         }
-        std::cout << "litkit: note: " << names
-                  << " set their own models; every tile draws them in the tile's models\n";
+        say(std::cout) << "litkit: note: " << names
+                       << " set their own models; every tile draws them in the tile's models\n";
     }
-    std::cout << "litkit: wrote " << output.string() << " (" << grid.image.width << "x"
-              << grid.image.height << ", " << grid.rows.size() << " x " << grid.columns.size()
-              << " tiles of " << grid.tile_width << "x" << grid.tile_height << ", "
-              << static_cast<int>(seconds * 1000.0 + 0.5) << " ms)\n";
+    say(std::cout) << "litkit: wrote " << output.string() << " (" << grid.image.width << "x"
+                   << grid.image.height << ", " << grid.rows.size() << " x " << grid.columns.size()
+                   << " tiles of " << grid.tile_width << "x" << grid.tile_height << ", "
+                   << static_cast<int>(seconds * 1000.0 + 0.5) << " ms)\n";
     return exit_success;
 }
 

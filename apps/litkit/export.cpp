@@ -68,10 +68,11 @@ int run_export(const ExportArguments& arguments) {
     } catch (const litkit::ArgumentError& error) {
         throw UsageError{error.what()};
     }
-    for (const fs::path& file : written) std::cout << "litkit: wrote " << file.string() << "\n";
+    for (const fs::path& file : written)
+        say(std::cout) << "litkit: wrote " << file.string() << "\n";
     if (!program.empty()) {
-        std::cout << "build and run it with:\n  "
-                  << litkit::export_cpp_instructions(directory, program) << "\n";
+        say(std::cout) << "build and run it with:\n  "
+                       << litkit::export_cpp_instructions(directory, program) << "\n";
     }
     return exit_success;
 }

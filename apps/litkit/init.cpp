@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "core/files.hpp"
 #include "litkit/scene.hpp"
+#include "options.hpp"
 
 namespace litkit_cli {
 
@@ -27,8 +28,8 @@ int run_init(const std::string& file, bool force) {
         throw UsageError{"'" + path.string() + "' already exists; pass --force to replace it"};
     }
     litkit::write_file_atomically(path, litkit::default_scene_toml());
-    std::cout << "litkit: wrote " << path.string() << "; render it with: litkit render "
-              << path.string() << "\n";
+    say(std::cout) << "litkit: wrote " << path.string() << "; render it with: litkit render "
+                   << path.string() << "\n";
     return exit_success;
 }
 

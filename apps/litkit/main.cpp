@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "completion.hpp"
 #include "core/files.hpp"
 #include "heap.hpp"
 #include "litkit/error.hpp"
@@ -19,6 +20,7 @@
 #include "modules.hpp"
 #include "options.hpp"
 #include "usage.hpp"
+#include "version.hpp"
 
 namespace {
 
@@ -53,7 +55,23 @@ void install_signal_handlers() {
 int main(int argc, char** argv) {
     litkit_cli::use_large_pages_for_the_heap();
     CLI::App app{"litkit: renders a lit, shaded 3D scene from a scene file"};
-    app.set_version_flag("--version", std::string("litkit ") + LITKIT_VERSION);
+    // The text is made only when asked for (version.cpp).
+    app.set_version_flag("--version", litkit_cli::version_text,
+                         "Show the version and the build's features, and exit");
+    bool quiet = false;
+    app.add_flag("-q,--quiet", quiet,
+                 "Say nothing but errors (no 'litkit: wrote', warnings or progress)");
+    // The bash completion script, made from the commands and options below
+    // (completion.cpp): the build writes it, `cmake --install` installs it.
+    // Not in --help (an empty group).
+    app.add_flag_callback(
+           "--bash-completion",
+           [&app] {
+               std::cout << litkit_cli::bash_completion(app);
+               throw CLI::Success();
+           },
+           "Print the bash completion script")
+        ->group("");
     app.require_subcommand(1);
     // Lets `--version` (and any option of the top level) follow a command:
     // `litkit render --version` works as docs/spec.md §8 asks.
@@ -88,6 +106,8 @@ int main(int argc, char** argv) {
         return exit_invalid;
     }
 
+    litkit_cli::set_quiet(quiet);
+
     const Command* command = nullptr;
     for (const Command& candidate : commands)
         if (candidate.app->parsed()) command = &candidate;
@@ -98,7 +118,7 @@ int main(int argc, char** argv) {
         return command->run();
     } catch (const litkit::SceneError& error) {
         print_diagnostics(error.diagnostics());
-        print_diagnostics(error.warnings());
+        if (!quiet) print_diagnostics(error.warnings());
         return exit_invalid;
     } catch (const litkit::IoError& error) {
         std::cerr << error.what() << "\n";

@@ -27,13 +27,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+bool quiet_run = false;
+
 // Loads the scene (or the built-in default) and shows its warnings.
 litkit::Scene load(const std::vector<std::string>& files,
                    std::uint64_t max_triangles = litkit::default_triangle_budget) {
     if (files.empty()) return litkit::default_scene();
     std::vector<fs::path> paths(files.begin(), files.end());
     litkit::Scene scene = litkit::load_scene(paths, {.max_triangles = max_triangles});
-    print_diagnostics(scene.warnings);
+    if (!quiet_run) print_diagnostics(scene.warnings);
     return scene;
 }
 
@@ -121,6 +123,15 @@ void add_scene_options(CLI::App* command, SceneArguments& arguments, bool render
     command->add_option("--backend", arguments.backend, backend_help)
         ->check(CLI::IsMember(backends))
         ->capture_default_str();
+}
+
+void set_quiet(bool quiet) { quiet_run = quiet; }
+
+bool quiet() { return quiet_run; }
+
+std::ostream& say(std::ostream& stream) {
+    static std::ostream nowhere(nullptr);  // no buffer: every write is dropped
+    return quiet_run ? nowhere : stream;
 }
 
 void print_diagnostics(const std::vector<litkit::Diagnostic>& diagnostics) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,14 @@ void add_normals_options(CLI::App* command, SceneArguments& arguments);
 void add_scene_options(CLI::App* command, SceneArguments& arguments, bool rendering = true);
 
 void print_diagnostics(const std::vector<litkit::Diagnostic>& diagnostics);
+
+// -q/--quiet (main.cpp sets it): a successful run says nothing, no "litkit:
+// wrote", note, warning or progress bar; errors and what a command exists
+// to print (explain, bench, --help) still show.
+void set_quiet(bool quiet);
+bool quiet();
+// `stream` for a message of a successful run, or a stream that drops it under --quiet.
+std::ostream& say(std::ostream& stream);
 
 // The scene (or the built-in default) with the command line's replacements
 // of [output] and [lighting]; its warnings shown.

@@ -3,6 +3,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <variant>
 
 #include "core/files.hpp"
@@ -40,6 +42,25 @@ void write_png_output(const litkit::Image& image, const std::filesystem::path& o
     } else {
         litkit::write_png(image, output);
     }
+}
+
+void require_picture_name(const fs::path& output,
+                          std::initializer_list<std::string_view> extensions,
+                          std::string_view command, std::string_view writes) {
+    if (is_standard_output(output) || output.string().ends_with('/')) return;
+    struct stat existing {};
+    if (::stat(output.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) return;
+    std::string extension = output.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::string wanted;
+    for (const std::string_view allowed : extensions) {
+        if (extension == allowed) return;
+        wanted += (wanted.empty() ? "" : " or ") + std::string(allowed);
+    }
+    throw UsageError{"-o " + output.string() + ": litkit " + std::string(command) + " writes " +
+                     std::string(writes) + "; name the output with " + wanted +
+                     " (or - for standard output); nothing was written"};
 }
 
 fs::path default_output(const std::vector<std::string>& scenes) {

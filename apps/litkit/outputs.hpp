@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "litkit/image.hpp"
@@ -19,6 +21,17 @@ bool is_standard_output(const std::filesystem::path& output);
 
 // The image as PNG into `output`, or onto standard output (is_standard_output).
 void write_png_output(const litkit::Image& image, const std::filesystem::path& output);
+
+// A picture's name must say what the file holds: `output` must end in one
+// of `extensions` (".png", compared case-insensitively) unless it is
+// standard output (is_standard_output), a folder's name ("DIR/", reported
+// by the writer) or something that exists and is no regular file
+// (/dev/null, a pipe, a folder). Else a UsageError naming what `command`
+// writes, before anything is drawn: a .jpg or .gif holding PNG bytes would
+// be refused or misread by whatever opens it later.
+void require_picture_name(const std::filesystem::path& output,
+                          std::initializer_list<std::string_view> extensions,
+                          std::string_view command, std::string_view writes);
 
 // `render`'s output: "scene.toml" → "scene.png"; the default scene →
 // "default.png"; a scene from standard input → "stdin.png".

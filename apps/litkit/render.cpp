@@ -33,6 +33,7 @@ int run_render(const RenderArguments& arguments) {
     const fs::path output =
         arguments.output.empty() ? default_output(files) : fs::path(arguments.output);
     refuse_to_overwrite_inputs(scene, files, output);
+    require_picture_name(output, {".png"}, "render", "a PNG picture");
 
     const auto start = std::chrono::steady_clock::now();
     const litkit::Backend backend = arguments.scene.backend_id();
@@ -43,7 +44,7 @@ int run_render(const RenderArguments& arguments) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The message names the backend unless it is the default one.
-    (is_standard_output(output) ? std::cerr : std::cout)
+    say(is_standard_output(output) ? std::cerr : std::cout)
         << "litkit: wrote " << output.string() << " (" << image.width << "x" << image.height << ", "
         << renderer.triangle_count() << " triangles, " << static_cast<int>(seconds * 1000.0 + 0.5)
         << " ms" << (backend != litkit::default_backend ? "; " + renderer.description() : "")

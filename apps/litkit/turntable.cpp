@@ -54,9 +54,13 @@ int run_turntable(const TurntableArguments& arguments) {
     // "DIR/" or an existing folder: numbered PNGs; anything else: one GIF.
     const bool to_folder = target.ends_with('/') || fs::is_directory(target);
     const fs::path output(target);
-    if (!to_folder) refuse_to_overwrite_inputs(scene, files, output);
+    if (!to_folder) {
+        refuse_to_overwrite_inputs(scene, files, output);
+        require_picture_name(output, {".gif"}, "turntable",
+                             "an animated GIF, or PNG frames into a folder named DIR/");
+    }
 
-    const bool terminal = ::isatty(STDERR_FILENO) == 1;
+    const bool terminal = ::isatty(STDERR_FILENO) == 1 && !quiet();
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -86,10 +90,10 @@ int run_turntable(const TurntableArguments& arguments) {
     }
     if (!to_folder) litkit::write_gif(frames, output, arguments.delay_ms);
     if (terminal) std::fputs("\n", stderr);
-    std::cout << "litkit: wrote " << (to_folder ? written.size() : 1) << " "
-              << (to_folder ? "frames into " : "animated GIF ") << output.string() << " ("
-              << arguments.frames << " frames, " << static_cast<int>(elapsed() * 1000.0 + 0.5)
-              << " ms)\n";
+    say(std::cout) << "litkit: wrote " << (to_folder ? written.size() : 1) << " "
+                   << (to_folder ? "frames into " : "animated GIF ") << output.string() << " ("
+                   << arguments.frames << " frames, " << static_cast<int>(elapsed() * 1000.0 + 0.5)
+                   << " ms)\n";
     return exit_success;
 }
 

@@ -9,7 +9,9 @@
 #
 # writes `lighting_models.png` beside this file: the Utah teapot in the four
 # classic reflection models (rows) and the four shading models (columns).
-# `docs/python.md` explains every call used here.
+# `docs/python.md` explains every call used here. The notebook
+# `lighting_models.ipynb` beside it is made from this file
+# (`scripts/make-notebook.py`): edit this one.
 
 # %%
 import pathlib
@@ -91,8 +93,10 @@ except litkit.Error as error:
     print(error)
 
 # %%
-# As a script, a PNG path given as its argument; else beside this file.
-given = [a for a in sys.argv[1:] if a.endswith(".png")]
-output = pathlib.Path(given[0]) if given else here / "lighting_models.png"
-grid.save(output)
-print("wrote", output)
+# As a script (not in a notebook), the grid is saved: to a PNG path given as
+# its argument, else beside this file.
+if "__file__" in globals():
+    given = [a for a in sys.argv[1:] if a.endswith(".png")]
+    output = pathlib.Path(given[0]) if given else here / "lighting_models.png"
+    grid.save(output)
+    print("wrote", output)

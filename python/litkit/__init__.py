@@ -25,6 +25,8 @@ except ImportError as _missing:
         "install NumPy for this one") from _missing
 
 from . import _litkit, _toml
+
+__version__ = _litkit.__version__  # the C++ library's (CMakeLists.txt's project version)
 from ._image import Image
 from ._litkit import (  # noqa: F401  (the public API)
     ArgumentError,

@@ -81,6 +81,11 @@ py::array image_array(litkit::Image&& image);
 // returns the warnings otherwise. Call without the GIL (it may read meshes).
 std::vector<litkit::Diagnostic> validate_or_throw(const litkit::Scene& scene);
 
+// Scene.add_mesh's mesh: vertices (N, 3) numbers and faces (M, 3) integers,
+// checked (shapes, dtypes, finite coordinates, indices below N); raises
+// litkit::ArgumentError naming the first bad entry (mesh.cpp).
+litkit::Mesh mesh_from_arrays(const py::handle& vertices, const py::handle& faces);
+
 void bind_errors(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_lighting(py::module_& module);

@@ -157,6 +157,7 @@ void bind_render(py::module_& module) {
 
 PYBIND11_MODULE(_litkit, module) {
     module.doc() = "litkit's C++ library; import litkit, not this";
+    module.attr("__version__") = LITKIT_VERSION;
     litkit_python::bind_errors(module);
     litkit_python::bind_scene(module);
     litkit_python::bind_lighting(module);

@@ -138,6 +138,38 @@ void bind_scene(py::module_& module) {
             },
             py::arg("written_as") = "",
             "The scene as one TOML file (mesh paths relative to written_as's folder)")
+        .def(
+            "add_mesh",
+            [](litkit::Scene& s, const py::handle& vertices, const py::handle& faces,
+               const std::string& name, glm::vec3 position, glm::vec3 rotation, float scale,
+               std::optional<litkit::Material> material) {
+                litkit::SceneObject object;
+                object.name = name;
+                object.shape = litkit::MeshDataShape(mesh_from_arrays(vertices, faces));
+                object.position = position;
+                object.rotation_degrees = rotation;
+                object.scale = scale;
+                if (material) object.material = *material;
+                // Checked with the scene it joins (a name already taken, a
+                // scale of 0, an object outside the room) before it joins it.
+                litkit::Scene with = s;
+                with.objects.push_back(std::move(object));
+                {
+                    py::gil_scoped_release unlocked;
+                    validate_or_throw(with);
+                }
+                s = std::move(with);
+                return s.objects.size() - 1;
+            },
+            py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("name") = "",
+            py::arg("position") = glm::vec3(0.0f), py::arg("rotation") = glm::vec3(0.0f),
+            py::arg("scale") = 1.0f, py::arg("material") = py::none(),
+            "Adds a mesh given as arrays, vertices (N, 3) numbers and faces (M, 3) integer "
+            "indices into them, counter-clockwise seen from outside, as an object placed like a "
+            "scene file's (position, rotation in degrees x then y then z, scale, material). "
+            "Checked as a mesh file is (shapes, finite coordinates, indices in range) and with "
+            "the scene; raises litkit.Error and leaves the scene as it was. Returns the object's "
+            "index. A scene holding one has no TOML (to_toml and to_dict raise ArgumentError).")
         .def("copy", [](const litkit::Scene& s) { return litkit::Scene(s); })
         .def("__copy__", [](const litkit::Scene& s) { return litkit::Scene(s); })
         .def("__deepcopy__", [](const litkit::Scene& s, py::dict) { return litkit::Scene(s); })
