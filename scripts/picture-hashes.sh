@@ -37,4 +37,4 @@ for scene in examples/*.toml examples/multi-file/*.toml bench/scenes/*.toml; do
   run "$n-cpp" export "$scene" -y --format cpp -o "$out/$n-cpp/x" --name prog
 done
 run default-turntable turntable --frames 8 --width 160 --height 120 -o "$out/default-turntable/t.gif"
-run default-turntable-png turntable --frames 4 --width 160 --height 120 -o "$out/default-turntable-png/d"
+run default-turntable-png turntable --frames 4 --width 160 --height 120 -o "$out/default-turntable-png/d/"
