@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Builds the Python package with the project's CMake build (pyproject.toml).
 
 The extension litkit._litkit and the package's Python files are what `cmake

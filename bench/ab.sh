@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Interleaved A/B timing of two litkit binaries on the CPU backend:
 #   bench/ab.sh OLD_LITKIT NEW_LITKIT [ROUNDS] [FRAMES]
 # Each round runs every scene on both binaries, alternating which goes first;

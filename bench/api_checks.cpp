@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the renderers' precondition check (check_renderable) costs
 // next to the full validation and to a frame: timing only, nothing passes
 // or fails. Run: cmake -DLITKIT_BUILD_BENCH=ON, build litkit_api_checks,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # How `litkit check` grows with the number of lights and of objects
 # (duplicate light positions by hashing, object overlaps behind a
 # sort-and-sweep broad phase). Prints a Markdown table (docs/performance.md

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench/compare.sh [--quick] [--targets] [--rounds R] [--frames K]
 #
 # litkit against a plain OpenGL program (bench/gl_peer: litkit_gl_peer, an

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench/cpu_time.sh [--rounds R] [SCENE-ARGUMENTS...]
 #
 # CPU time per 1920x1080 frame of the three sides of bench/compare.sh

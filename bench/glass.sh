@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench/glass.sh [--rounds R] [--frames K]
 #
 # litkit's glass (docs/spec.md §10) against Intel Embree: scenes/glass-sphere.toml

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Instructions per steady frame of the CPU backend, counted by callgrind
 # (repeatable where wall time is not): bench/instructions.sh LITKIT [FRAMES]
 # Counts only inside Renderer::render_into, at 1920x1080, on 1 thread (so

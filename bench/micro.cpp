@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Google Benchmark microbenchmarks of the inner loops: shading a block of
 // pixels (each kernel set, and the scalar public function), and whole frames
 // of small scenes, where triangle setup and rasterization dominate.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every reflection model on the full-screen fill scene (1920x1080, Phong
 # shading, one point light), rounds interleaved so that the machine's drift
 # hits every model alike; prints each model's median frame time and its ratio

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit_png_diff A.png B.png [--diff out.png]: how close two pictures are.
 // Prints the fraction of pixels whose channels all differ by at most 2/255,
 // the largest difference, and with --diff a picture of where they differ

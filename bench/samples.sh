@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench/samples.sh [--rounds R] [--frames K] [--width W] [--height H]
 #
 # The cost of anti-aliasing (docs/spec.md §11) on the CPU renderer: the

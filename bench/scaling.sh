@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # How litkit's frame time, set-up time and peak memory grow with pixels and
 # with triangles. Prints a Markdown table (docs/performance.md keeps one).
 # Usage: bench/scaling.sh [BUILD_DIR]   (default: build, as the README builds)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Set-up time of the 261k-triangle sphere (meshes, normals, world space: the
 # `setup:` line of `litkit bench`), fresh processes, for each normals option,
 # interleaved between two litkit binaries:

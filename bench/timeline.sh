@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench/timeline.sh RUNS LITKIT [ARGUMENTS...]
 #
 # Where the time of a whole `litkit` process goes:

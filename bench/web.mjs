@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Times the playground's rendering in headless Chromium (docs/performance.md,
 // "The web playground"): the default scene at 800x600, drawn again and again
 // through the page's own path (litkit_render: read and validate the text,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The playground's render time in headless Chromium (docs/performance.md):
 #   bench/web.sh [RUNS]
 # Builds the site and the test's npm package first, as scripts/test-web.sh does.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Interleaved whole-process timing of a few commands.
 
     bench/whole_ab.py RUNS 'CMD A' 'CMD B' [...]

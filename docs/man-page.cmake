@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Builds litkit.1 with help2man from `litkit --help` and `litkit --version`,
 # the text of docs/litkit.h2m, and a COMMANDS section written here: the
 # `--help` of every command that `litkit --help` lists, so that the man page

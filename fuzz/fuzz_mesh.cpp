@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer targets over the mesh readers (docs/reliability.md): fuzz_ply,
 // fuzz_stl and fuzz_gltf, this file compiled once per format
 // (LITKIT_FUZZ_FORMAT: 1 PLY, 2 STL, 3 glTF). Any bytes may come in; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target over the Wavefront OBJ reader (load_obj) and what a scene
 // does next with the mesh it returns: the vertex normals of every weighting,
 // creased corner normals, the closed-mesh test and the signed volume. Any

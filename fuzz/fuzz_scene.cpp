@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target over the scene loader (docs/spec.md §6: "bad input never renders
 // and never crashes"). Any bytes may come in; the only acceptable ways out
 // are a Scene, a SceneError (invalid input) or an IoError (not UTF-8, not

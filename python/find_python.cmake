@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Finds what the Python module needs (docs/python.md): a Python 3 interpreter
 # with NumPy, its headers, and pybind11. Sets LITKIT_PYTHON_FOUND.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Builds the litkit playground (docs/web.md) into build-web/site: the page,
 # its scripts, the examples and litkit's library compiled to WebAssembly
 # with Debian's emscripten. Serve that folder with any static file server:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The C++ sources follow .clang-format: fails (listing the files) where
 # clang-format would change anything. With --fix, formats them in place.
 # Templates and embedded text (*.in, *.inc) are left alone: they are written

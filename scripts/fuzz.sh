@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Fuzzes one of litkit's readers with libFuzzer under ASan and UBSan for a
 # bounded time, starting from every file of its kind in the tree:
 #   scene  the scene loader (fuzz/fuzz_scene.cpp), seeds: every .toml file

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages litkit needs. Safe to run again: apt-get
 # skips what is already there.
 #

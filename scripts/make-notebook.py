@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Makes a Jupyter notebook from a `# %%` script, so that the notebook is
 never edited by hand and never drifts from the script it comes from.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints one SHA-256 line per output of a fixed set of litkit runs over every
 # example and bench scene: renders on the CPU (1 and 2 threads) and through
 # OpenGL, the compare sheet (every reflection x shading pair), every normals

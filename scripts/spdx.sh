@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The licence line of every source file: `// SPDX-License-Identifier: MIT`
 # (`#` in Python, shell and CMake files) as its first line, or its second
 # after a `#!` line. Adds it where it is missing and leaves every other file

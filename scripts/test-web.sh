@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Tests the playground (docs/web.md) in a real browser: builds the site
 # (scripts/build-web.sh) and the native litkit, installs the test's one npm
 # package (puppeteer-core, pinned in tests/web/package-lock.json; it drives

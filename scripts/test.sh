@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Builds litkit and runs every test (the C++ and Python suites through ctest,
 # then the web playground's in headless Chromium). With --sanitize, builds a separate tree
 # under AddressSanitizer and UBSan and runs the suite there.

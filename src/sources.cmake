@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The library's sources, one list per layer (src/README.md draws the layers),
 # relative to src/. src/CMakeLists.txt builds each list as a layer of its
 # own; web/CMakeLists.txt (the WebAssembly playground) and

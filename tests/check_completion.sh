@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The bash completion script the build writes (docs/CMakeLists.txt) is what
 # `litkit --bash-completion` prints, is valid bash, and completes what the
 # program has: every command `litkit --help` lists, every long option each

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The API reference builds without a single Doxygen warning, and the
 # configuration really fails on an undocumented public name.
 # Usage: check_docs.sh DOXYGEN DOXYFILE SOURCE_DIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Files under src/ and apps/ stay under 600 lines, unless src/README.md names
 # the file, with its reason, in its section "Files above 600 lines" as a
 # line of the form

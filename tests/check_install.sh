@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the built litkit into a scratch prefix and builds and runs a small
 # project that finds it with find_package(litkit), from a fresh build folder.
 # Also checks what the package installs: exactly the public headers (each

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The build enforces src/'s layers (src/README.md, src/CMakeLists.txt): a
 file of one layer compiles against its own folder, the folders below it and
 their public headers, and an include that points up (or sideways, between

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The man page built from `litkit --help` (docs/CMakeLists.txt) renders
 # without a groff warning, names every command that `litkit --help` lists
 # with that command's options, carries the version, and `cmake --install`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An independent reference for pictures with glass (docs/spec.md §10.2): a
 // Whitted ray tracer in double precision, written from the specification's
 // formulas, to check the CPU renderer's pictures against (tests/test_glass.cpp).

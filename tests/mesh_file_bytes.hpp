@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the mesh format tests (test_mesh_formats.cpp, test_gltf.cpp) share:
 // binary files built from explicit values, files written to a folder of
 // the test's own, and errors checked for their message and place.

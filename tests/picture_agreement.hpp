@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How close two pictures of one scene are, away from the edges of objects:
 // the measure the OpenGL backend and the exported program are held to
 // against the CPU backend (≥ 99.5% of such pixels within 2/255).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Running a shell command from a test and collecting what it printed.
 #pragma once
 

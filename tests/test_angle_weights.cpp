@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Angle-weighted vertex normals (docs/spec.md §9.2) bit for bit as the
 // plain arithmetic gives them: the library computes two triangles' corner
 // angles at a time in the lanes of double vectors, and must round exactly

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The C++ API as a program calls it: the renderers' preconditions
 // (check_renderable), meshes given in memory (MeshDataShape), and the
 // inside-out warning for closed meshes whose faces wind clockwise.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The corpus of bad scene files in tests/bad (docs/spec.md §6): each case is loaded
 // and the diagnostics it produces — errors, warnings, or the IoError of a file
 // that cannot be read — must equal its expectation file line for line.

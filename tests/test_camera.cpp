@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The camera of docs/spec.md §1 (src/scene/camera.hpp): the ray through
 // each pixel is the spec's, the vertex transform sends the points on it to
 // that pixel's centre at their view depth, and the point at depth w is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The command-line tool as a user meets it: exit statuses, messages, files.
 #include <gtest/gtest.h>
 #include <sys/wait.h>

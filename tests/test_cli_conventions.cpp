@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The command line's conventions: an output's name says what it holds (-o
 // picture.jpg is refused, not filled with PNG bytes), -q/--quiet, and
 // --version listing what the build was made with.

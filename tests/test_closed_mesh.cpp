@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/spec.md §10.1's closed-mesh rule (src/geometry/closed_mesh.hpp): after
 // §2's welding, with zero-area triangles left out, every edge is used by
 // exactly two triangles, once in each direction. The built-in cube, sphere

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // GJK hull tests (convex.hpp) against cases whose answers are plain geometry.
 #include <gtest/gtest.h>
 

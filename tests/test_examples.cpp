@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every scene under examples/ loads and draws something.
 //
 // A scene is either one .toml file directly in examples/, or a folder of

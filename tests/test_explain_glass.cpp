@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of `litkit explain` on pixels that see glass (docs/spec.md §10.3):
 // the ray tree in text and JSON. The scenes are built in code; the angles
 // and Fresnel factors are checked against the laws' angle form, computed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `litkit export` and `litkit render --backend gl` through the command line:
 // the exported GLSL compiles, the exported C++ program builds with
 // the system's compiler and draws the picture `litkit render` draws, and the

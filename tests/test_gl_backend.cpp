@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The OpenGL backend against the CPU backend: the same scene drawn
 // by both must agree within 2/255 on at least 99.5% of the pixels that lie
 // away from the edges of objects (tests/picture_agreement.hpp). Runs on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Programs specialised to a scene's lights: glsl::generate with
 // the lights writes one block per light instead of the general loop, and the
 // OpenGL backend draws with them up to 16 lights. The shaders must compile,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Glass in the CPU renderer (docs/spec.md §10): its pictures against an
 // independent ray tracer in double precision (tests/glass_reference.hpp), and
 // values computed by hand, through whole pictures and Renderer::probe's ray

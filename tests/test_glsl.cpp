@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the GLSL generator (litkit/glsl.hpp, src/codegen/glsl_expr.hpp):
 //   - the expression type Expr and its printing (literals, precedence,
 //     builtins, common subexpressions);

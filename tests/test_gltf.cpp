@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glTF 2.0 mesh files (src/geometry/gltf.cpp): small files whose every
 // number is known, their buffers built here from explicit values; node
 // transforms against matrices worked out by hand; bad files with the place

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The command-line tool's heap set-up (apps/litkit/heap.cpp): the heap gets
 // transparent huge pages, and allocation still behaves. Each test runs in a
 // process of its own (gtest_discover_tests), since the set-up is

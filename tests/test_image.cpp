@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PNG output and whole-or-nothing file writing.
 #include <gtest/gtest.h>
 #include <sys/resource.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The SIMD kernel sets' interpolation of Phong varyings against the scalar
 // formulas of the fragment stage (src/cpu/fragment.cpp), bit for bit: the kernels are
 // built with FMA, and a fused multiply-add would round differently. Every

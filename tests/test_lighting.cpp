@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Unit tests for the lighting equations of docs/spec.md §4 (IM1–IM4, DD3–DD7, lights,
 // pixel value). Every expected value is worked out by hand in the comment
 // above its check; none is taken from the code under test.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Unit tests for face normals, vertex normals and bounds (docs/spec.md §2, DD8, DD9).
 // Every expected value is worked out by hand in the comment above its check.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PLY and STL mesh files (src/geometry/ply.cpp, stl.cpp): small files whose
 // every number is known, the text ones written here or in tests/data, the
 // binary ones built from explicit values; bad files with the message and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The CLI's modules (apps/litkit/modules.hpp, docs/design.md "Modules"):
 // litkit-view.so for `litkit view` and litkit-gl.so for `--backend gl` are
 // opened only by the runs that use them, so the executable itself loads

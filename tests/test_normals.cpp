@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Vertex normals weighted by area, angle and Max's weights, creases, and a
 // mesh file's own normals (docs/spec.md §9.2). Every expected value is worked
 // out by hand in the comment above its check.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // src/core/portable_math.hpp: sine and cosine of degrees and powers built
 // from IEEE operations only, checked against the C library in long double
 // (x87's 64-bit significand: 11 bits beyond a double) and against C's rules

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R11 as a user at a terminal meets it: when [lighting] leaves a model out and
 // standard input is a terminal, the CLI asks whether to use the defaults. The
 // CLI runs on a real pseudo-terminal, and every read has a deadline, so a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The equations of refraction (include/litkit/refraction.hpp, docs/spec.md
 // §10.2) against values a reader can recompute. The expected numbers come
 // from the angle form of the same laws, in double, not from the vector form

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/reliability.md: output written whole to what the user named and nothing else;
 // input bounded, located and exact; scale. Real files, real device nodes and
 // FIFOs made in a temporary folder (the tests run as root), real signals.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Properties of the renderer that hold whatever the scene: the same picture
 // on any number of threads and with either set of SIMD kernels, and the
 // pipeline's edge cases (back faces, the near plane, empty scenes).

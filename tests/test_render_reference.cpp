@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Image tests of the CPU renderer (litkit::render) against an independent
 // reference: a small ray caster in double precision over the same triangles.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Anti-aliasing (docs/spec.md §11): the key `[output] samples` as scene files
 // give it (read, checked with its place, suggested, written back), pictures
 // whose pixels are computed by hand, the command line's --samples, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Geometry at any scale (docs/reliability.md): a scene
 // scaled by any factor a float can hold is checked and drawn as the same
 // scene; no rendered pixel is NaN; the narrowest field of view draws no

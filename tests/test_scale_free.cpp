@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Directions free of scale (src/core/scale_free.hpp, docs/reliability.md):
 // an observer looking at a point 1e-30 or 1e+30 away, a light direction or
 // an `up` of such a length, draws and is checked as the same scene at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene files (docs/spec.md §5, §6): parsing, defaults, merging, located diagnostics,
 // and the object transform of docs/spec.md §2.
 #include "litkit/scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene keys of refraction (docs/spec.md §10.1) as scene files give them:
 // read with their values and defaults, checked with the rules of §6 (range,
 // type, "did you mean"), the closed-mesh rule, written back by scene_to_toml,

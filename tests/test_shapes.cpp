@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Unit tests for the built-in shapes and OBJ mesh files (docs/spec.md §2). Every
 // expected value is worked out by hand in the comment above its check.
 #include <gtest/gtest.h>

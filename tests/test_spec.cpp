@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The worked examples of docs/spec.md, read from the page itself and checked
 // against the library: each ```text block that starts with "example:" gives
 // its inputs above "# results" and the values the equations give below it,

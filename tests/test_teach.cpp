@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the teaching tools (src/teach): `litkit compare` and `litkit
 // turntable`, through the library and the command line. Every picture is
 // checked against `litkit render` of the same settings, never against a

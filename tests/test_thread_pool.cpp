@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The CPU renderer's thread pool (src/core/thread_pool.hpp): every index of a
 // job runs exactly once, on a thread of the pool, whatever the counts; the
 // first exception comes back to the caller and the pool stays usable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tracer's acceleration structure (src/trace/accel.hpp): single cases
 // worked by hand (face rules, edge-on triangles, the open ends of (t_min,
 // t_max), barycentrics, the tie rule), and the hierarchy against a brute-

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of `litkit view` (docs/viewer.md) as a user meets it: the real viewer
 // in a real window on a virtual X display (Xvfb, started here), driven by
 // real input events (xdotool) and read back with xwd. Every picture is

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes examples.js for the playground page (docs/web.md): the text of every
 scene in examples/ (the top-level *.toml; examples/multi-file is a scene in
 two files, which the one-text editor cannot hold) and of the mesh files they

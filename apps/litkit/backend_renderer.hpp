@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The renderer a command draws with: whichever backend --backend chose
 // (litkit/backend.hpp), behind one object. Every backend draws the picture of
 // docs/spec.md §1-§4.

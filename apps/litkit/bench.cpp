@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit bench: frames rendered into memory, and the time per frame.
 #include <algorithm>
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit check: validates scene files without rendering.
 #include <iostream>
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The commands of `litkit`, one file each: render.cpp, check.cpp, init.cpp,
 // export.cpp, compare.cpp, view.cpp, explain.cpp, turntable.cpp and
 // bench.cpp. Each defines its subcommand and runs it; main.cpp adds them,

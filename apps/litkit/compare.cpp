@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit compare: one picture of the scene under every reflection × shading
 // pair, labelled.
 #include <chrono>

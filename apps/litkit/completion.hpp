@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `litkit --bash-completion`: a bash completion script made from the CLI11
 // definitions of every command and option, so that it never lists an option
 // the program lacks. The build writes it (docs/CMakeLists.txt) and `cmake

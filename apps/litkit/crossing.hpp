@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Errors across a module's boundary (modules.hpp, docs/design.md "Modules").
 //
 // The `litkit` executable carries its own copy of the C++ run-time (it links

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit explain: how a pixel got its value, step by step; or the equations
 // at a point (--at).
 #include <algorithm>

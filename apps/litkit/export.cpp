@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit export: the scene as GLSL shaders, or as a C++ program that draws it
 // with OpenGL.
 #include <cstdint>

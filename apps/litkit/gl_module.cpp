@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The module litkit-gl.so: litkit::GlRenderer for the CLI's `--backend gl`.
 #include "gl_module.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `--backend gl` as the CLI uses it: litkit::GlRenderer (library litkit::gl)
 // behind a small interface, in the module litkit-gl.so, so that libepoxy
 // (3,500 relocations of its own) loads only in the runs that draw with

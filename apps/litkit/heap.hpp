@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How the command-line tool sets up its heap before it does anything else.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit init: the default scene as a starting file.
 #include <filesystem>
 #include <iostream>

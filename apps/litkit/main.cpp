@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit: the command-line tool. Thin by design: it parses arguments, calls
 // the library and decides how results and errors are shown and which exit
 // status they get (docs/spec.md §6: 0 success, 1 a file could not be read or written,

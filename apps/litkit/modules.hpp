@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The commands' large libraries, loaded only by the commands that use them
 // (docs/design.md, "Modules"): litkit-view.so (SDL2, Dear ImGui, libepoxy)
 // for `litkit view`, litkit-gl.so (libepoxy, and through it EGL and OpenGL)

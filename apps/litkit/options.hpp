@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the commands that load a scene share: the scene's options (their
 // definitions and the arguments they fill), and the scene loaded with them.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where the commands write: the default names of their outputs, standard
 // output, and the rule that an output is never one of the inputs.
 #pragma once

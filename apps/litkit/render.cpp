@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit render: the scene (or the default scene) to PNG.
 #include <unistd.h>
 

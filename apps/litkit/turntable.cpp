@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit turntable: the observer circles look_at once; an animated GIF, or
 // numbered PNG frames in a folder.
 #include <unistd.h>

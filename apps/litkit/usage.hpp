@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Help for a command line that went wrong: the short usage `litkit` alone
 // prints, and "did you mean" for a misspelt command or option.
 #pragma once

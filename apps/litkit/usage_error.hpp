@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exit statuses of docs/spec.md §6, and the usage problems that the
 // commands find after CLI11's own parsing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `litkit --version`: the version, then what this build was made with.
 #pragma once
 

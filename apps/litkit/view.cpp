@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit view: a live window on the scene (docs/viewer.md), from the module
 // litkit-view.so.
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit_gl_peer: the scenes of bench/ drawn by a plain OpenGL program, the
 // way a competent programmer (or a tutorial) writes one for a given scene.
 // bench/compare.sh measures both litkit backends against it.

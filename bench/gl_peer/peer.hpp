@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit_gl_peer: the plain OpenGL program bench/compare.sh measures litkit
 // against. See main.cpp for what it is and why.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The peer's shaders, written by hand: a reflection function per classic
 // model, a block per light kind, and the four ways of shading. For a scene,
 // the program strings together the blocks of its lights, so the shader has

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit_glass_peer: the glass scene drawn the way a graphics programmer
 // would with Intel Embree (Debian's libembree-dev 3.13), the peer of
 // litkit's ray tree in bench/glass.sh. Every ray, the pixels' own included,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # %% [markdown]
 # # litkit in a notebook: the lighting models side by side
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The renderers that draw a scene, by name: one list that the command
 /// line's `--backend`, its help text and the viewer take their choices from.

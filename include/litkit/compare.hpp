@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// `litkit compare`: one picture of a scene under every reflection × shading
 /// pair of the family, as a labelled grid (docs/learning.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The one home of the lighting equations (docs/spec.md §4). Every path evaluates
 /// these templates: the scalar `shade` and the CPU renderer's per-vertex and

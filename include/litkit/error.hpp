@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Errors the library throws. The library never prints or exits: it throws one
 /// of these, and the caller (the CLI, a test, a user's program) decides how to

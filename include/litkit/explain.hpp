@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// `litkit explain`: how one pixel of `litkit render` got its value, step by
 /// step in the symbols of docs/spec.md, or the equations at a point of the

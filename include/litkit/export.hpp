@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Code generation (R7): the scene as shaders a user pastes into an OpenGL
 /// program, or as a whole program a user builds and runs. Both draw what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The OpenGL backend (`litkit render --backend gl`): the picture of docs/spec.md §1–§4
 /// drawn by OpenGL 3.3 core on a headless EGL context (a GPU's driver where

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// GLSL generated from the lighting equations (docs/spec.md §4): the OpenGL backend's
 /// shaders and what `litkit export --format glsl` writes. The function bodies

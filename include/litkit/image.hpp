@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// 8-bit RGB images and PNG output.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The lighting-model family of docs/spec.md §3–§4: reflection models, shading models,
 /// lights and materials, and `shade`, which evaluates the colour at one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Limits that several layers share, each defined once: validation, the
 /// renderers, the PNG reader, the teaching tools, the command line and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// litkit's public API in one include: scenes and their files, the lighting
 /// models and the per-point evaluator, meshes and shapes, the list of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Triangle meshes (AB4) and their normals (docs/spec.md §2, DD8, DD9).
 #pragma once

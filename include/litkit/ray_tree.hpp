@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The ray tree of one pixel that sees glass (docs/spec.md §10.2, §10.3): what
 /// `litkit explain` shows and Renderer::probe records, one node per ray.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The equations of refraction (docs/spec.md §10.2, items 1–7 and 10): what
 /// happens to a ray at the interface between two media, and how much light

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The CPU renderer: draws a scene exactly as docs/spec.md §1–§4 define it.
 #pragma once

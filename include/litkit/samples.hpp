@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Anti-aliasing's sample patterns (docs/spec.md §11): where in a pixel each
 /// of its 1, 4, 8 or 16 samples lies, written once for every path (the CPU

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// A scene as docs/spec.md §5 describes it, and its loading from TOML files.
 /// Units: lengths in the scene's world units, angles in degrees, material and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Built-in shapes and mesh files (docs/spec.md §2), in local coordinates. Built-in
 /// meshes are closed where the shape is and wind counter-clockwise seen from

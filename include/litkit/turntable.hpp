@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// `litkit turntable`: the observer circles `look_at` once; frames as an
 /// animated GIF or numbered PNGs (docs/learning.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// The value and geometry rules of docs/spec.md §6 (R2, R8), checked on a loaded
 /// scene before anything renders. The loader (scene.hpp) checks the shape of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Times litkit.render (checks the scene, builds meshes, renders) against
 Renderer.render with a new observer each frame (checks the scene, renders;
 meshes kept), and the copy of the picture into NumPy. Timing only, nothing

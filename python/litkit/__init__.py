@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit from Python: load a scene, render it into a NumPy array, evaluate the
 lighting models at one point. docs/python.md is the guide.
 

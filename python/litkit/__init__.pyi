@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Type stubs of the package litkit (PEP 561; py.typed marks the package as
 # typed). tests/python/test_package.py checks that they name every public
 # name of the module and of its classes, and nothing else.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit.Image: the rendered picture, a NumPy array that shows itself.
 
 An ndarray subclass, so that everything NumPy does with the (height, width, 3)

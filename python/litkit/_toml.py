@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Writes a scene given as Python objects (dicts, lists, numbers, strings) as
 the TOML text that ``litkit.loads`` parses, so that a scene built in code goes
 through the same reader and checks as a scene file.

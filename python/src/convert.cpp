@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conversions and argument checks shared by the binding (convert.hpp).
 #include "convert.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the binding's files share: glm::vec3 as a Python sequence of three
 // numbers, model names as strings, images as NumPy arrays, and the
 // argument checks that turn a bad Python argument into litkit.ArgumentError.

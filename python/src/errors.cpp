@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit's errors as Python exceptions: litkit.Error, the base of
 // litkit.SceneError, litkit.IoError and litkit.ArgumentError, as in C++
 // (litkit/error.hpp). str(error) is what() — the one-line diagnostic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit explain from Python: how one pixel got its value (the text the
 // command prints, the pixel's numbers) and, where the pixel sees glass, its
 // ray tree as a list of dicts (docs/spec.md §10.3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-point evaluator: Material, Light, shade() and shade_terms(), for
 // checking one point's arithmetic by hand (docs/spec.md §4).
 #include <pybind11/stl.h>

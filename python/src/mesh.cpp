@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Meshes from NumPy arrays as objects of a scene (Scene.add_mesh): vertices
 // N x 3, faces M x 3, checked as a mesh file is checked (shapes, types,
 // finite coordinates, indices in range) before the scene holds them.

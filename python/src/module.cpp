@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit._litkit: the extension module under the Python package litkit
 // (python/litkit/__init__.py wraps it; docs/python.md is the user's view).
 // Rendering: the one-shot render() and Renderer, the prepared scene that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scenes: loading them (files, text, the built-in default), checking them,
 // and the parts a notebook changes between pictures (observer, room, output,
 // models). Lights and objects are changed through dictionaries

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Source files the exporter writes out, compiled into the library as text
 // (src/CMakeLists.txt embeds them at build time).
 #pragma once

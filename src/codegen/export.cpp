@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/export.hpp"
 
 #include <algorithm>

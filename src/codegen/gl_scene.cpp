@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/gl_scene.hpp"
 
 #include "litkit/mesh.hpp"

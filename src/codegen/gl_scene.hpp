@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A scene reduced to what the OpenGL programs draw (src/gl/opengl_core.inc):
 // per object, world-space vertex arrays in the programs' layout, its
 // material and its reflection × shading model. Shared by the GL backend

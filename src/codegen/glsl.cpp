@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/glsl.hpp"
 #include "litkit/error.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glsl::Expr (codegen/glsl_expr.hpp): building the expression graph, printing
 // it as GLSL, and evaluating it (for tests).
 #include "codegen/glsl_expr.hpp"

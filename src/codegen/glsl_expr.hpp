@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Internal to litkit: the scalar type that turns litkit/equations.hpp into
 // GLSL. An Expr does not compute; each operation adds a node to an expression
 // DAG (a value the template names once and uses twice is one node with two

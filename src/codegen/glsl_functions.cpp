@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The GLSL functions printed from the model family's one definition
 // (include/litkit/equations.hpp evaluated on glsl_expr's expressions):
 // incidence per light kind, the spot factor, each reflection model's terms,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/backend.hpp"
 
 #include <array>

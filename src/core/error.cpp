@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/error.hpp"
 
 #include <string_view>

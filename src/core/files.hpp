@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Whole-or-nothing file output (docs/spec.md §6: a failed run leaves no partial file
 /// and the previous file untouched). docs/reliability.md lists what happens with

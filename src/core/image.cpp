@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/image.hpp"
 
 #include <png.h>

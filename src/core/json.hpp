@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one JSON writer of `litkit explain --json` (teach/explain_format.cpp)
 // and the playground's answers (web/src/playground.cpp): strings and numbers
 // as JSON text, which the callers join with their own punctuation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How library code that owns no threads (mesh building) is lent some by
 // code that does (the renderer's pool): a ParallelFor calls job(i) once for
 // each i in [0, count), on any of its threads and in any order, and returns

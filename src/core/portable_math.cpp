@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Sine, cosine and powers with + − × ÷ and exact operations only
 // (portable_math.hpp says why).
 #include "core/portable_math.hpp"

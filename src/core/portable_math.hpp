@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Sine, cosine and powers that give the same bits in every build.
 //
 // C libraries round sinf, cosf and powf (and, more rarely, their double

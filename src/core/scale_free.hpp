@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Directions of any length a float can hold: normalising v in float squares
 // its components, and a length of 1e-30 or 1e+30 squares to 0 or to
 // infinity (a NaN direction, a black picture). These functions first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A small fixed thread pool owned by its user (no global state). Runs
 // `parallel_for` jobs: indices 0..count-1 handed out one at a time, so uneven
 // work (bands crowded with triangles) balances itself; each thread starts

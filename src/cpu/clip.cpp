@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The clip stage: a triangle that crosses a clip plane (near, far, or the
 // guard band at the sides) is cut to the planes, Sutherland–Hodgman in
 // homogeneous coordinates as OpenGL clips, and the polygon left is handed to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fragment stage, one band of rows per job after the rasterize stage
 // has filled its visibility buffer: each visible pixel once (no shading of
 // pixels later hidden), row by row. Perspective-correct weights for a whole

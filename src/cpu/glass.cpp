@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Glass in the CPU renderer (docs/spec.md §10): the tracer of src/trace/,
 // built for a scene where some object has t > 0, and the fragment stage's
 // last step for the pixels whose first surface is such an object. Their

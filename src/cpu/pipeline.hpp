@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The CPU rasterizer's pipeline: its state, what prepare builds once per
 // Renderer (the objects in world space, their lights and materials) and
 // what the stages hand each other within a frame, kept between frames to

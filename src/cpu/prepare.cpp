@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The prepare stage, once per Renderer (like uploading buffers): each
 // object's mesh in world space (DD8, DD9), then its lights, materials and
 // models, and the setup jobs' triangle ranges. Renderer::update runs only

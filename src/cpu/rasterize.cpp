@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The rasterize stage, one band of rows per job: every triangle binned to
 // the band is tested at the pixel centres (i + 0.5, j + 0.5), or at one of
 // the pixels' samples (docs/spec.md §11) by moving it, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The CPU rasterizer's public face (include/litkit/render.hpp): Renderer
 // holds the pipeline (pipeline.hpp, one file per stage) and runs its stages
 // in order for each frame (render_into, below).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Anti-aliasing (docs/spec.md §11) on the CPU: supersampling, every sample
 // shaded. The vertex and setup stages have run once for the frame (setup
 // binned each triangle to the bands its samples may touch); each band is

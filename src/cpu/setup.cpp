@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The setup stage, one chunk of an object's triangles per job: trivial
 // accept and reject against the clip planes (from the vertex stage's
 // outcodes), clipping for the triangles that cross a plane (clip.cpp),

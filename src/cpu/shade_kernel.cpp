@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cpu/shade_kernel.hpp"
 
 namespace litkit::kernels {

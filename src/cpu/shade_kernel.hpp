@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-pixel stages that run on many pixels at once: Phong-shading a run
 // of pixels and turning intensities into pixel values. Compiled once per
 // instruction set (AVX-512, AVX2+FMA and a portable baseline) from the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The kernels for AVX2 with FMA: 8 pixels per instruction. This file alone
 // is compiled with -mavx2 -mfma; it runs only where select_kernels finds them.
 #include <immintrin.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The kernels for AVX-512 (F, BW, DQ, VL) with FMA: 16 pixels per
 // instruction. This file alone is compiled with those flags; it runs only
 // where select_kernels finds them (and the OS saves the ZMM registers).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Template text of the kernels in shade_kernel.hpp, instantiated once per
 // instruction set by shade_kernel_<arch>.cpp. The lighting itself is
 // equations::shade_point, the same template every other path uses, here with

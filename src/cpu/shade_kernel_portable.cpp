@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The kernels for any x86-64 (SSE2) or other CPU xsimd supports by default.
 #include <cstring>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The edge functions of a small triangle (shade_kernel.hpp's
 // visibility_small) set up in the lanes of SSE vectors, for the kernel sets
 // with SSE4.1 (AVX2, AVX-512). Included by those files alone: the function

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The vertex stage: every mesh vertex to clip space and to its window
 // corner (clip.cpp's to_window, which the kernel set follows) once per
 // frame, in parallel; Gouraud objects lit at each vertex. (Flat objects are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/spec.md §10.1's closed-mesh rule (closed_mesh.hpp).
 #include "geometry/closed_mesh.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/spec.md §10.1: whether a mesh is closed, the condition for an object
 // that refracts. Welding and the triangles that take part are §2's (DD9):
 // positions within 1e-6 × the bounding-box diagonal are one vertex, and

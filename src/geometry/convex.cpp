@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "geometry/convex.hpp"
 
 #include <glm/geometric.hpp>

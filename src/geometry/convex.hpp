@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// \file
 /// Exact-enough tests between convex hulls of point sets, by GJK
 /// (Gilbert–Johnson–Keerthi), for the overlap rules of docs/spec.md §6. Points are

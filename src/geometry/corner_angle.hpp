@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The angle at a triangle's corner for angle-weighted normals (docs/spec.md
 // §9.2), with + − × ÷ only.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/spec.md §9.2 crease normals in the form world_mesh splits positions
 // by: a normal per position where nothing can split, and a normal per
 // corner only at the vertices where faces may part (corner_normals in

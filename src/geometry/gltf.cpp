@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glTF 2.0 mesh files (docs/scene-format.md, "Mesh files"): the JSON, the
 // GLB container and data: URIs parsed by tinygltf (tinygltf.cpp), every
 // number litkit draws then checked here, where each error can be named by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Meshes given in memory (scene.hpp's MeshDataShape): their checks, OBJ
 // text, the orientation tests behind the inside-out warning, and bounds.
 #include <glm/common.hpp>

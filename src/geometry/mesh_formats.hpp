@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mesh file formats: the one table that says which reader reads a mesh
 // file (a scene's `type = "mesh"` object), chosen by the file's extension
 // or by the object's `format` key. A new format is one entry in

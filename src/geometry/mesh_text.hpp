@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the PLY and STL readers share: words of a text file with their
 // line and column, numbers read exactly (std::from_chars: no locale, so a
 // decimal comma is never a point), and little- or big-endian values of a

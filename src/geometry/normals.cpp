@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Normals (docs/spec.md §2, §9.2, DD8, DD9): each face's, each vertex's as
 // the faces at its welded vertex weight them, and each corner's under a
 // crease angle; the scene-file names of the weightings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Wavefront OBJ mesh files (docs/spec.md §2, `type = "mesh"`), read with tinyobjloader.
 #include <tiny_obj_loader.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "geometry/obj_numbers.hpp"
 
 #include <charconv>

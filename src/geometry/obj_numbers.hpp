@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The numbers of an OBJ file checked before tinyobjloader reads them: it
 // reads "nan", "abc", "0,5" (a decimal comma) or a missing coordinate as 0
 // and says nothing, and only warns about a face index out of range.

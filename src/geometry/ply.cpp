@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PLY mesh files (docs/scene-format.md, "Mesh files"), ASCII and binary of
 // either byte order, read by a reader of our own: Debian packages no PLY
 // library for C++ to read them with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Built-in shapes (docs/spec.md §2). Scene validation checks the parameters first
 // (docs/spec.md §6); the checks here are a guard for callers of the library.
 #include "litkit/shapes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // STL mesh files (docs/scene-format.md, "Mesh files"), ASCII and binary,
 // read by a reader of our own: Debian has no STL library to read them with.
 #include <glm/vec3.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Utah teapot (docs/spec.md §2): Martin Newell's 32 bicubic Bézier patches,
 // tessellated into triangles.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tinygltf's header as litkit compiles it everywhere (tinygltf.cpp holds
 // its implementation, gltf.cpp uses it): without image decoding or writing,
 // which the TinyGLTF class otherwise refers to, and without reading image

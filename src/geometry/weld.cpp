@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Welding (docs/spec.md §2, DD9): positions within 1e-6 × the bounding-box
 // diagonal are one vertex, transitively. Points are sorted into a grid of
 // cells and each compared with its neighbours in its own and, near a face,

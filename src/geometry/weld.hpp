@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Welding (docs/spec.md §2, DD9): which positions of a mesh count as one
 // vertex. weld.cpp finds them with a grid of cells; normals.cpp sums the
 // faces' normals over them.

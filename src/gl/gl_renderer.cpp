@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/gl_renderer.hpp"
 
 #include <dlfcn.h>

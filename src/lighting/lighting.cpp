@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "litkit/lighting.hpp"
 
 #include <glm/geometric.hpp>

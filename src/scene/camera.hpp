@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The camera of docs/spec.md §1 and the ray through each pixel, defined
 // once: the CPU rasterizer's vertex transform and the world position it
 // lights at each pixel (its SIMD kernels, and Renderer::probe, which explain

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in default scene of docs/spec.md §7 (R12), as the text `litkit init`
 // writes and the playground starts with.
 #include <span>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/float_range.hpp"
 
 #include <algorithm>

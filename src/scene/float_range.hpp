@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Geometry at any scale (docs/reliability.md): a scene whose lengths are so
 // large or so small that a float's squares overflow or underflow (a room of
 // 1e19 or of 1e-24) is drawn as the same scene with every length multiplied

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene files (docs/spec.md §5): reading them, parsing TOML, merging several files
 // into one Scene, and validating it (docs/spec.md §6). Problems are collected, never
 // thrown one at a time, so that a run reports all of them.

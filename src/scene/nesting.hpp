@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The nesting limit of scene files (docs/reliability.md): toml++ parses
 // tables, arrays and dotted keys by recursion, one stack frame per level, so
 // a 100 KB file of 50,000 levels overflows the stack. The text is scanned

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene reader's tables (scene/reader.hpp): which keys each table has,
 // and how each becomes part of the Scene.
 #include <algorithm>

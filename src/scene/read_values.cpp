@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene reader's typed values (scene/reader.hpp): each returns nothing,
 // and reports why, when the value is absent or unusable.
 #include <algorithm>

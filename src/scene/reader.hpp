@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene reader (docs/spec.md §5): turns the TOML tables of one or more files into
 // a Scene. Problems in the input are collected, never thrown one
 // at a time, so that a run reports all of them (docs/spec.md §6).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A Scene's objects placed in the world (docs/spec.md §2): their transforms, meshes and
 // world-space vertices and normals, as every backend draws them; the meshes
 // validation built, kept for the renderers (BuiltMeshes).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // toml++ as litkit uses it: Debian's headers (libtomlplusplus-dev, toml++
 // 3.3.0), with one function of theirs replaced. Every file of litkit that
 // uses toml++ includes this header instead of <toml++/toml.h>.

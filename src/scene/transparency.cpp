@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Objects that refract (transparency.hpp).
 #include "scene/transparency.hpp"
 

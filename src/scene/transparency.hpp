@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Objects that refract (docs/spec.md §10): the closed-mesh rule of §10.1 as
 // validation reports it, and the refusal of the drawers that cannot trace
 // rays (§10: a backend that cannot says so rather than draw something else).

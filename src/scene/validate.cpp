@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // docs/spec.md §6: ranges, then geometry (inside the room, overlaps, lights inside
 // objects, the observer), then warnings. Each rule reports every offender,
 // located at the offending value.

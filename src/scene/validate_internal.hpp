@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The validator as the loader calls it: told which entities already failed
 // the loader's shape checks, so their stand-in defaults raise no geometric
 // follow-on errors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Words in messages: "did you mean" suggestions for misspelt keys and values,
 // lists, articles. Used by the scene reader and the validator.
 #pragma once

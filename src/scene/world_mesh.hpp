@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The meshes a scene's validation built, kept for its renderers
 // (Scene::built_meshes), and world_mesh (litkit/scene.hpp) with its
 // independent parts run through `parallel` (core/parallel.hpp), for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A Scene written back as one TOML file that reads as the same scene: every
 // number in its shortest form that reads back to the same float, colours as
 // the 0-255 integers they came from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit compare: the scene under every reflection × shading pair, one tile
 // each, with the models' names in a margin.
 #include "litkit/compare.hpp"

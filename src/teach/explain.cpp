@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit explain: the renderer's own record of a pixel (Renderer::probe),
 // with the equations evaluated again, term by term, where it evaluated them.
 #include "litkit/explain.hpp"

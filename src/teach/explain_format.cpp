@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit explain's two forms: text for reading, JSON for programs.
 #include <charconv>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What explain's text and JSON writers share (teach/explain_format.cpp,
 // teach/explain_tree.cpp): numbers as the shortest text that reads back as
 // the same float, vectors, and an object's label.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ray tree of a glass pixel in `litkit explain` (docs/spec.md §10.3): a
 // short block per ray, indented by depth, in text; every node in JSON.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "teach/labels.hpp"
 
 #include <ft2build.h>

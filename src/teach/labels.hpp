@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Text for picture labels (litkit compare), drawn with FreeType in DejaVu Sans.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // litkit turntable: the observer on its circle, and animated GIF output.
 #include "litkit/turntable.hpp"
 

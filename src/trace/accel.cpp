@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tracer's acceleration structure (accel.hpp): a four-wide bounding-
 // volume hierarchy per object and one over the objects, in one array of
 // nodes. The top hierarchy's leaf for an object is that object's root, so

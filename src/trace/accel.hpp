@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tracer's acceleration structure (docs/spec.md §10.2 item 8): nearest
 // hits of rays against the scene's triangles in world space, with the face
 // rules of refraction. A ray in the room's medium hits only front faces

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The binned SAH build (bvh_build.hpp). Each node's primitives are a range
 // of one array of references, partitioned in place; the bounds of each
 // side are gathered while partitioning, so a node's one pass of its own is

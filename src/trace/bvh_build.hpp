@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The binary tree the hierarchy (accel.cpp) is collapsed from: a bounding-
 // volume hierarchy over boxes (an object's triangles, or the objects), split
 // by the binned surface-area heuristic (I. Wald, "On fast Construction of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ray tree (ray_tree.hpp), docs/spec.md §10.2 items 1–9, one ray at a
 // time, depth first.
 #include "trace/ray_tree.hpp"

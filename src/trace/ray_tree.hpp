@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ray tree of docs/spec.md §10.2 (T. Whitted, "An Improved Illumination
 // Model for Shaded Display", Communications of the ACM 23(6), 1980): the
 // light that comes back along a ray through a scene of opaque and glass

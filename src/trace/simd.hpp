@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The four-wide SIMD batches of the hierarchy (its nodes' boxes and its
 // blocks of triangles are four wide): SSE2 on x86-64 (and in the
 // WebAssembly build, whose SSE2 headers map onto SIMD128), NEON on ARM.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shades one point through the installed library and checks the number:
 // Lambert, N = L = (0, 1, 0), light 1 unit above, so I = k_d · C · 1 = 0.7.
 // Then draws the default scene with litkit::gl, the OpenGL backend, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Using litkit from C++ (docs/cpp-api.md): a scene built in code around a
 // mesh given as arrays, drawn from two observers through one prepared
 // scene, and errors caught as litkit::Error with where they come from.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """What every Python test shares: the built CLI, the source tree's examples,
 and the PNGs `litkit render` writes, decoded independently (Pillow).
 

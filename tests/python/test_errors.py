@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Errors reach Python as litkit.Error with the message and place that
 `litkit check` prints, and bad arguments raise litkit.Error, never crash."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """examples/python/lighting_models.py runs and its picture is what
 `litkit render` draws, tile by tile."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit.explain: `litkit explain --pixel` from Python, and the ray tree of a
 pixel that sees glass as Python data (docs/spec.md §10.3)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit.render and Renderer.render release the GIL: another Python thread
 runs while they work.
 

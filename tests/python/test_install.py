@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """`cmake --install` puts the package beside the library, and it imports from
 there (with only the install prefix's folder on PYTHONPATH)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A picture shows inline in Jupyter: IPython's display formatter (what the
 Jupyter kernel calls to turn a cell's value into display data) gives it an
 image/png that decodes to the very pixels."""

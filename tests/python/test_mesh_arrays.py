@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Meshes from NumPy arrays (Scene.add_mesh): drawn as the same mesh read
 from an OBJ file is drawn, and checked as a file is (shapes, types, NaN,
 indices out of range), with a litkit.Error that names the bad entry."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """examples/python/lighting_models.ipynb: made from the `# %%` script beside
 it (scripts/make-notebook.py), and run headlessly as Jupyter runs it
 (nbclient and an IPython kernel): no error output, and each picture it

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit as a Python package (pyproject.toml, setup.py): installed by pip
 into a virtual environment, offline and without build isolation, as Debian
 12's own tools do it, and made into a wheel by `python3 -m build`. Both reuse

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The scene keys of refraction (docs/spec.md §10.1) in Python: Material's
 transmission, ior, absorption_color and absorption_distance, Room.ior,
 Scene.max_depth and the max_depth keyword of render, with the checks

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit.render and litkit.Renderer draw what `litkit render` draws: the
 arrays are compared pixel for pixel with the CLI's PNG, decoded by Pillow."""
 

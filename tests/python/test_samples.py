@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Anti-aliasing (docs/spec.md §11) from Python: the samples keyword of
 render, Renderer.render and explain, and Scene.output.samples, drawing what
 `litkit render --samples N` draws, checked as the command line checks it."""

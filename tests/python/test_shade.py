@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """litkit.shade and shade_terms against the equations of docs/spec.md §4,
 computed here by hand for one point."""
 

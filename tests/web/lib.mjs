@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the playground's test (playground.test.mjs) and benchmark
 // (bench/web.mjs) share: a static file server for build-web/site, Debian's
 // Chromium started headless through puppeteer-core (no browser download), a

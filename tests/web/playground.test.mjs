@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drives the built playground (build-web/site) in Debian's headless Chromium
 // and checks it against the native `litkit` (scripts/test-web.sh runs it):
 //   node playground.test.mjs SITE_DIR LITKIT REPO_ROOT [SCREENSHOT]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // web/site/sliders.js on its own (no browser): how a slider's value goes
 // into the scene text, where the value is written and where it is not.
 //   node sliders.test.mjs SITE_DIR_OR_WEB_SITE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The litkit playground (docs/web.md): the scene text in, litkit's CPU
 // renderer (WebAssembly, litkit.wasm) draws it, the picture out. Every
 // picture comes from the text as `litkit render` reads it, with the model

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sliders write into the scene text, so that the text stays the one
 // description of the picture (what `litkit render` of it draws). The module
 // tells where each value is written (line, column of the value, from the

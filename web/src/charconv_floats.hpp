@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // std::to_chars and std::from_chars for float and double, which the C++
 // library of Debian's emscripten (3.1.6, libc++ of LLVM 14) declares only for
 // integers. The library's sources use them to print numbers in messages and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The playground page's way into litkit (docs/web.md): a few C functions that
 // web/site/playground.js calls through emscripten's ccall. Each takes the
 // scene text as the page has it and does what the command line does with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "viewer/drawer.hpp"
 
 #include <epoxy/gl.h>

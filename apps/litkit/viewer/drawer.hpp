@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What draws the viewer's picture: the renderer of the backend chosen
 // (litkit/backend.hpp) behind one object, and the screen that shows an image
 // in the window.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer panel's per-object and per-light controls (panel.hpp).
 #include "viewer/panel.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer panel's controls of one object's material and of one light
 // (Dear ImGui widgets, drawn inside the caller's tree node).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer: an SDL2 window with an OpenGL context that shows litkit's
 // picture pixel for pixel (a texture blitted 1:1), a Dear ImGui panel over
 // it, the camera under the mouse, the models under the keys, and the scene's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `litkit view`: a live window on a scene (docs/viewer.md).
 #pragma once
 

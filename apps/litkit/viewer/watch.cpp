@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "viewer/watch.hpp"
 
 #include <algorithm>

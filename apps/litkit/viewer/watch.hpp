@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Watching the files a scene is made of, for the viewer's live reload.
 #pragma once
 
