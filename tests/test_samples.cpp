@@ -216,12 +216,15 @@ TEST(Supersampling, PixelsInsideOneFlatFaceKeepTheirColour) {
     for (int samples : {4, 8, 16}) {
         scene.output.samples = samples;
         const Image many = render(scene);
-        for (int y = 0; y < 11; ++y)
-            for (int x = 0; x < 10; ++x)
+        for (int y = 0; y < 11; ++y) {
+            for (int x = 0; x < 10; ++x) {
                 if (one.pixel(x, y)[0] != 255 && x > 0 && y > 0 && y < 10 &&
-                    one.pixel(x - 1, y - 1)[0] != 255 && one.pixel(x, y + 1)[0] != 255)
+                    one.pixel(x - 1, y - 1)[0] != 255 && one.pixel(x, y + 1)[0] != 255) {
                     for (int c = 0; c < 3; ++c)
                         EXPECT_EQ(many.pixel(x, y)[c], one.pixel(x, y)[c]) << x << ", " << y;
+                }
+            }
+        }
     }
 }
 

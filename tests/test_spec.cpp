@@ -406,8 +406,11 @@ TEST(TextsFollowTheFamily, TheStartingFileListsEveryModelWeightingAndLight) {
     EXPECT_EQ(lists["reflection:"], reflection_names());
     EXPECT_EQ(lists["shading:"], strings(litkit::shading_names));
     EXPECT_EQ(lists["normals:"], strings(litkit::normals_names));
-    for (const std::string& line : lines)  // the comments fit an 80-column editor
-        if (line.starts_with('#')) EXPECT_LT(line.size(), 80u) << line;
+    for (const std::string& line : lines) {  // the comments fit an 80-column editor
+        if (line.starts_with('#')) {
+            EXPECT_LT(line.size(), 80u) << line;
+        }
+    }
     // Every light type is named: the scene's own and the "other" ones.
     const std::string text(litkit::default_scene_toml());
     for (std::string_view kind : litkit::light_kind_names)

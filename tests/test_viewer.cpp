@@ -56,9 +56,12 @@ class Display {
         // Kept open: Xvfb writes the number again when it starts a new
         // server generation, and ends if it cannot.
         number_fd_ = fds[0];
-        if (n > 0)
-            name_ =
-                ":" + std::string(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
+        if (n > 0) {
+            // Appended, not ":" + std::string(...): GCC 12 warns falsely
+            // (-Wrestrict) on a literal added to a temporary string.
+            name_ = ":";
+            name_.append(buffer, static_cast<std::size_t>(n - (buffer[n - 1] == '\n')));
+        }
     }
     ~Display() {
         if (number_fd_ >= 0) close(number_fd_);

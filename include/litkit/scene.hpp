@@ -124,7 +124,7 @@ struct TeapotShape {
 struct MeshFileShape {
     std::filesystem::path file;  ///< already resolved against the scene file's folder
     /// The file's format; nothing: by the file's extension (mesh_file_format).
-    std::optional<MeshFileFormat> format;
+    std::optional<MeshFileFormat> format = std::nullopt;
 };
 /// A mesh given in memory, for scenes built in code: positions and triangles
 /// (counter-clockwise seen from outside), in the object's local coordinates

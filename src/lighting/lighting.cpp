@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/scale_free.hpp"
 #include "core/portable_math.hpp"
+#include "core/scale_free.hpp"
 #include "litkit/equations.hpp"
 #include "litkit/error.hpp"
 

@@ -10,8 +10,8 @@
 #include "litkit/explain.hpp"
 
 #include "core/json.hpp"
-#include "core/scale_free.hpp"
 #include "core/portable_math.hpp"
+#include "core/scale_free.hpp"
 #include "teach/explain_text.hpp"
 
 namespace litkit {
