@@ -402,7 +402,7 @@ TEST_F(Viewer, SSavesThePictureBesideTheScene) {
 
 TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     // The panel's layout for a scene of one object and one light: the gamma
-    // and max_depth sliders' rows, then the object's and the light's, the
+    // and max_depth sliders' rows, the samples menu, then the object's and the light's, the
     // frame time, the file name and the Save button (Dear ImGui's default
     // style).
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --width 480 --height 360"));
@@ -419,9 +419,9 @@ TEST_F(Viewer, PanelEditsChangeThePictureAndSaveAsWritesAScene) {
     EXPECT_GT(largest_difference(before, after), 8);
 
     // Type a file name and press Save as...
-    xdo("mousemove --window " + window + " 100 191 sleep 0.1 click 1 sleep 0.1");
+    xdo("mousemove --window " + window + " 100 214 sleep 0.1 click 1 sleep 0.1");
     xdo("type --delay 30 saved.toml");
-    xdo("sleep 0.1 mousemove --window " + window + " 40 214 sleep 0.1 click 1");
+    xdo("sleep 0.1 mousemove --window " + window + " 40 237 sleep 0.1 click 1");
     const auto deadline = std::chrono::steady_clock::now() + 3s;
     while (!fs::exists(dir / "saved.toml") && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(40ms);
@@ -458,11 +458,12 @@ TEST_F(Viewer, GlassSlidersChangeThePicture) {
         for (int x = 420; x < 640; ++x)
             if (orange(opaque, x, y) > orange(opaque, bx, by)) bx = x, by = y;
     ASSERT_GT(orange(opaque, bx, by), 60) << "no ball beside the panel";
-    // The ball's own rows open below its name (the row after max_depth):
+    // The ball's own rows open below its name (the row after max_depth and
+    // samples):
     // color, ka, kd, ks, shininess, then transmission. A click at the right
     // end of transmission's slider: t = 1 (clamped), the ball turns to glass.
-    xdo("mousemove --window " + window + " 40 133 sleep 0.1 click 1 sleep 0.2");
-    xdo("mousemove --window " + window + " 243 268 sleep 0.2 click 1");
+    xdo("mousemove --window " + window + " 40 156 sleep 0.1 click 1 sleep 0.2");
+    xdo("mousemove --window " + window + " 243 291 sleep 0.2 click 1");
     // Through clear glass the background (20, 30, 40) shows, and white
     // highlights: no longer orange.
     const auto deadline = std::chrono::steady_clock::now() + 10s;
