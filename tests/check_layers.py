@@ -39,7 +39,7 @@ PROBES = [
     ("trace", "cpu/pipeline.hpp", False),
     ("trace", "litkit/render.hpp", False),
     ("cpu", "trace/accel.hpp", True),
-    ("codegen", "trace/accel.hpp", False),
+    ("codegen", "trace/bvh_build.hpp", True),
     ("cpu", "scene/camera.hpp", True),
     ("cpu", "litkit/render.hpp", True),
     ("cpu", "codegen/gl_scene.hpp", False),

@@ -207,6 +207,75 @@ reflection = "gooch"
 material = { color = [220, 90, 70], ka = 0 }
 )toml";
 
+// Glass (docs/spec.md §10): a lens, an absorbing faceted cube and a flat
+// gouraud-lit glass torus (not convex) before opaque objects of two models,
+// with gamma 2.2, for the glass programs of the exports.
+constexpr const char* glass_scene = R"toml(
+[room]
+width = 20
+height = 20
+depth = 20
+
+[observer]
+position = [0.3, 0.4, 9]
+look_at = [0, 0, 0]
+
+[lighting]
+reflection = "phong"
+shading = "phong"
+max_depth = 6
+
+[output]
+width = 320
+height = 240
+background = [30, 40, 60]
+gamma = 2.2
+
+[[lights]]
+type = "ambient"
+intensity = 0.3
+
+[[lights]]
+type = "directional"
+direction = [-0.3, -0.4, -1]
+
+[[objects]]
+type = "cube"
+size = 6
+position = [0, 0, -5]
+rotation = [10, 20, 0]
+shading = "faceted"
+material = { color = [200, 80, 60] }
+
+[[objects]]
+type = "sphere"
+position = [2.6, -1.2, -1.5]
+reflection = "gooch"
+material = { color = [90, 160, 220] }
+
+[[objects]]
+type = "sphere"
+position = [-1.5, 0.5, 1]
+segments = 24
+rings = 12
+material = { ks = 0.5, transmission = 1, ior = 1.5 }
+
+[[objects]]
+type = "cube"
+size = 1.6
+position = [1.5, 1.2, 1]
+rotation = [20, 30, 0]
+shading = "faceted"
+material = { transmission = 1, ior = 1.8, absorption_color = [230, 130, 50], absorption_distance = 0.5 }
+
+[[objects]]
+type = "torus"
+position = [0.3, -1.5, 1.5]
+rotation = [60, 0, 0]
+shading = "gouraud"
+material = { color = [230, 200, 90], transmission = 0.6, ior = 1.4 }
+)toml";
+
 class Export : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -217,6 +286,7 @@ class Export : public ::testing::Test {
         fs::create_directories(dir);
         std::ofstream(dir / "mixed.toml") << mixed_scene;
         std::ofstream(dir / "family.toml") << family_scene;
+        std::ofstream(dir / "glass.toml") << glass_scene;
     }
     void TearDown() override { fs::remove_all(dir); }
 
@@ -316,6 +386,32 @@ TEST_F(Export, GlslTheValidatorRejectsABrokenShader) {
 TEST_F(Export, CppProgramOfTheNewModelsDrawsWhatLitkitDraws) {
     std::string configure_output;
     ASSERT_NO_FATAL_FAILURE(expect_program_draws_what_litkit_draws("family", configure_output));
+}
+
+// The glass programs and the glass scene's buffers travel with the program.
+TEST_F(Export, CppProgramOfGlassDrawsWhatLitkitDraws) {
+    std::string configure_output;
+    ASSERT_NO_FATAL_FAILURE(expect_program_draws_what_litkit_draws("glass", configure_output));
+    EXPECT_NE(read_text(dir / "program" / "main.cpp").find("const GlassScene glass_scene"),
+              std::string::npos);
+}
+
+// Glass objects get programs of their own, with the ray tree; they compile.
+TEST_F(Export, GlslWritesTheGlassProgramsAndEachCompiles) {
+    const std::string validator = LITKIT_GLSLANG_VALIDATOR;
+    ASSERT_FALSE(validator.empty());
+    const Outcome exported = cli("export --format glsl glass.toml -o shaders");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    for (const std::string stem : {"phong-phong-glass", "phong-faceted-glass",
+                                   "phong-gouraud-glass", "phong-faceted", "gooch-phong"}) {
+        const fs::path vert = dir / "shaders" / (stem + ".vert");
+        const fs::path frag = dir / "shaders" / (stem + ".frag");
+        ASSERT_TRUE(fs::exists(frag)) << frag;
+        const bool glass = stem.ends_with("-glass");
+        EXPECT_EQ(read_text(frag).find("vec3 trace_bracket(") != std::string::npos, glass) << stem;
+        const Outcome link = run("'" + validator + "' -l " + quoted(vert) + " " + quoted(frag));
+        EXPECT_EQ(link.status, 0) << stem << "\n" << link.output;
+    }
 }
 
 TEST_F(Export, CppProgramBuildsRunsAndDrawsWhatLitkitDraws) {

@@ -538,6 +538,23 @@ TEST_F(Viewer, SigtermEndsItCleanly) {
     EXPECT_EQ(wait_exit(), 0);
 }
 
+// Glass through the OpenGL drawer (docs/spec.md §10): the window shows what
+// `litkit render --backend gl` draws, a ball of glass before a wall.
+TEST_F(Viewer, OpenGlBackendDrawsGlass) {
+    std::string scene = small_scene;
+    const std::string colour = "material = { color = [200, 100, 60], shininess = 20 }";
+    scene.replace(scene.find(colour), colour.size(),
+                  "material = { color = [200, 100, 60], shininess = 20, transmission = 1 }\n\n"
+                  "[[objects]]\nname = \"wall\"\ntype = \"cube\"\nsize = 2\n"
+                  "position = [0.4, 0, -2.5]\nrotation = [0, 30, 0]\n"
+                  "material = { color = [60, 200, 90] }");
+    write_scene(scene);
+    ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui --backend gl"));
+    EXPECT_LE(wait_for(rendered("--backend gl")), 1) << "at start";
+    key("q");
+    EXPECT_EQ(wait_exit(), 0);
+}
+
 TEST_F(Viewer, OpenGlBackendDrawsInTheWindowsOwnContext) {
     ASSERT_NO_FATAL_FAILURE(start("scene.toml --no-ui --backend gl"));
     EXPECT_LE(wait_for(rendered("--backend gl")), 1) << "at start";

@@ -12,8 +12,10 @@
 #include <utility>
 
 #include "codegen/embedded_text.hpp"
+#include "codegen/gl_glass.hpp"
 #include "codegen/gl_scene.hpp"
 #include "codegen/glsl_expr.hpp"
+#include "codegen/glsl_glass.hpp"
 #include "core/files.hpp"
 #include "litkit/error.hpp"
 #include "litkit/glsl.hpp"
@@ -30,7 +32,8 @@ namespace fs = std::filesystem;
 using ModelPair = std::pair<Reflection, Shading>;
 
 struct ObjectModels {
-    std::vector<ModelPair> pairs;  // each once, in order of first use
+    std::vector<ModelPair> pairs;  // each once with its glass flag, in order of first use
+    std::vector<bool> glass;       // per pair: its objects have t > 0 (docs/spec.md §10)
     std::vector<int> program;      // per object, an index into `pairs`
 };
 
@@ -41,9 +44,15 @@ ObjectModels object_models(const Scene& scene, const ExportOptions& options) {
     for (const SceneObject& object : scene.objects) {
         const ModelPair pair{object.reflection.value_or(scene_reflection),
                              object.shading.value_or(scene_shading)};
+        const bool glass = object.material.transmission > 0.0f;
         std::size_t index = 0;
-        while (index < models.pairs.size() && models.pairs[index] != pair) ++index;
-        if (index == models.pairs.size()) models.pairs.push_back(pair);
+        while (index < models.pairs.size() &&
+               (models.pairs[index] != pair || models.glass[index] != glass))
+            ++index;
+        if (index == models.pairs.size()) {
+            models.pairs.push_back(pair);
+            models.glass.push_back(glass);
+        }
         models.program.push_back(static_cast<int>(index));
     }
     return models;
@@ -53,12 +62,38 @@ int light_capacity(const Scene& scene) {
     return std::max<int>(1, static_cast<int>(scene.lights.size()));
 }
 
-// "blinn-phong" + "flat" → "blinn-phong-flat"; as an identifier "blinn_phong_flat".
+// "blinn-phong" + "flat" → "blinn-phong-flat" (identifier(): "blinn_phong_flat").
 std::string pair_file_stem(const ModelPair& pair) {
     return std::string(to_string(pair.first)) + "-" + std::string(to_string(pair.second));
 }
-std::string pair_identifier(const ModelPair& pair) {
-    std::string name = pair_file_stem(pair);
+// Program i's file stem: its pair's, with "-glass" for a glass program.
+std::string program_stem(const ObjectModels& models, std::size_t i) {
+    return pair_file_stem(models.pairs[i]) + (models.glass[i] ? "-glass" : "");
+}
+
+// The scene's reflection models, each once in the objects' order (the glass
+// programs' model numbers, detail::scene_models).
+std::vector<Reflection> reflections_in_order(const ObjectModels& models) {
+    std::vector<Reflection> reflections;
+    for (const int program : models.program) {
+        const Reflection r = models.pairs[static_cast<std::size_t>(program)].first;
+        if (std::find(reflections.begin(), reflections.end(), r) == reflections.end())
+            reflections.push_back(r);
+    }
+    return reflections;
+}
+
+// A glass program (glsl_glass.hpp) for pair i, specialised to the scene's lights.
+glsl::Shaders glass_shaders(const ObjectModels& models, std::size_t i, const Scene& scene) {
+    std::vector<Light> lights;
+    for (const SceneLight& light : scene.lights) lights.push_back(light.light);
+    const std::vector<Reflection> reflections = reflections_in_order(models);
+    return glsl::generate_glass(
+        {models.pairs[i].first, models.pairs[i].second, reflections, lights, scene.output.gamma});
+}
+
+// A file stem as a C++ identifier: '-' becomes '_'.
+std::string identifier(std::string name) {
     for (char& c : name)
         if (c == '-') c = '_';
     return name;
@@ -202,11 +237,13 @@ std::string shaders_source(const ObjectModels& models, const Scene& scene) {
     for (std::size_t i = 0; i < models.pairs.size(); ++i) {
         const ModelPair& pair = models.pairs[i];
         const glsl::Shaders shaders =
-            glsl::generate_for_scene(pair.first, pair.second, lights, scene.output.gamma);
-        const std::string id = pair_identifier(pair);
+            models.glass[i]
+                ? glass_shaders(models, i, scene)
+                : glsl::generate_for_scene(pair.first, pair.second, lights, scene.output.gamma);
+        const std::string id = identifier(program_stem(models, i));
         out += "// Program " + std::to_string(i) + ": reflection " +
                std::string(to_string(pair.first)) + ", shading " +
-               std::string(to_string(pair.second)) + ".\n";
+               std::string(to_string(pair.second)) + (models.glass[i] ? ", glass" : "") + ".\n";
         out += "const char* const " + id + "_vertex = R\"glsl(" + shaders.vertex + ")glsl\";\n\n";
         out +=
             "const char* const " + id + "_fragment = R\"glsl(" + shaders.fragment + ")glsl\";\n\n";
@@ -216,8 +253,10 @@ std::string shaders_source(const ObjectModels& models, const Scene& scene) {
 }
 
 struct GeometrySource {
-    std::string arrays;   // the data
-    std::string objects;  // the ObjectData table's rows
+    std::string arrays;                  // the data
+    std::string objects;                 // the ObjectData table's rows
+    std::uint64_t numbers = 0;           // in `arrays`
+    std::vector<detail::GlObject> kept;  // every object's, where some object is glass
 };
 
 // 16777216 → "16,777,216".
@@ -276,7 +315,7 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models,
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const ModelPair& pair = models.pairs[static_cast<std::size_t>(models.program[i])];
-        const detail::GlObject gl =
+        detail::GlObject gl =
             detail::gl_object(object, pair.first, pair.second, normal_options(scene, object));
         total_numbers += gl.vertices.size() + gl.indices.size();
         if (total_numbers > options.max_source_numbers)
@@ -322,7 +361,8 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models,
         out.objects +=
             "    {.name = \"" + label +
             "\",\n     .program = " + std::to_string(models.program[i]) + ",  // " +
-            pair_file_stem(pair) + "\n     .material = {.color = " + vec3_braces(m.color) +
+            program_stem(models, static_cast<std::size_t>(models.program[i])) +
+            "\n     .material = {.color = " + vec3_braces(m.color) +
             ", .ka = " + float_literal(m.ka) + ", .kd = " + float_literal(m.kd) +
             ", .ks = " + float_literal(m.ks) + ", .shininess = " + float_literal(m.shininess) +
             ",\n                  .parameters = {" + parameters + "}},\n     .vertices = " + id +
@@ -332,7 +372,9 @@ GeometrySource geometry_source(const Scene& scene, const ObjectModels& models,
                            "_indices,\n     .index_count = std::size(" + id + "_indices)";
         }
         out.objects += "},\n";
+        if (detail::has_glass(scene)) out.kept.push_back(std::move(gl));
     }
+    out.numbers = total_numbers;
     return out;
 }
 
@@ -393,18 +435,23 @@ bool is_identifier(const std::string& name) {
 
 std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
                                   const ExportOptions& options) {
-    detail::refuse_refraction(scene, "the GLSL export");
     detail::refuse_samples(scene, "the GLSL export");
-    std::vector<ModelPair> pairs = object_models(scene, options).pairs;
-    if (pairs.empty()) {  // no objects: the scene's own models, ready for some
-        pairs.push_back({scene.reflection.value_or(options.fallback_reflection),
-                         scene.shading.value_or(options.fallback_shading)});
+    ObjectModels models = object_models(scene, options);
+    if (models.pairs.empty()) {  // no objects: the scene's own models, ready for some
+        models.pairs.push_back({scene.reflection.value_or(options.fallback_reflection),
+                                scene.shading.value_or(options.fallback_shading)});
+        models.glass.push_back(false);
     }
     std::vector<fs::path> files;
     std::vector<std::string> texts;
-    for (const ModelPair& pair : pairs) {
-        glsl::Shaders shaders = glsl::generate(pair.first, pair.second, light_capacity(scene));
-        const std::string stem = pair_file_stem(pair);
+    for (std::size_t i = 0; i < models.pairs.size(); ++i) {
+        const ModelPair& pair = models.pairs[i];
+        // Glass programs are specialised to the scene's lights and models,
+        // as the C++ program's are (their rays reach every object).
+        glsl::Shaders shaders =
+            models.glass[i] ? glass_shaders(models, i, scene)
+                            : glsl::generate(pair.first, pair.second, light_capacity(scene));
+        const std::string stem = program_stem(models, i);
         files.push_back(directory / (stem + ".vert"));
         texts.push_back(std::move(shaders.vertex));
         files.push_back(directory / (stem + ".frag"));
@@ -419,7 +466,6 @@ std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
 std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
                                  const std::string& program_name, const std::string& scene_label,
                                  const ExportOptions& options) {
-    detail::refuse_refraction(input, "the C++ export");
     detail::refuse_samples(input, "the C++ export");
     // The program draws what the renderers draw: lengths brought into a
     // float's range by a power of two (scene/float_range.hpp; 1 for
@@ -435,6 +481,23 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
     check_source_size_from_parameters(scene, models, options);
     const GeometrySource geometry =
         geometry_source(scene, models, options);  // reads mesh files first
+    detail::GlassSource glass;
+    if (detail::has_glass(scene)) {
+        std::vector<int> glass_object;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            glass_object.push_back(
+                scene.objects[i].material.transmission > 0.0f ? static_cast<int>(i) : -1);
+        glass = detail::glass_source(detail::glass_data(scene, geometry.kept), glass_object);
+        const std::uint64_t numbers = geometry.numbers + glass.numbers;
+        if (numbers > options.max_source_numbers)
+            throw SceneError({Diagnostic{
+                scene.location_of("objects"), Severity::Error,
+                "the C++ export would write " + grouped(numbers) +
+                    " numbers of vertex and glass data into main.cpp, more than its limit of " +
+                    grouped(options.max_source_numbers) +
+                    " (a compiler needs hundreds of bytes for each); lower the tessellation, or "
+                    "draw it with `litkit render --backend gl` (docs/reliability.md)"}});
+    }
 
     const Observer& o = scene.observer;
     const Rgb8 bg = to_rgb8(scene.output.background);
@@ -454,7 +517,9 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
          {"NEAR", float_literal(o.near)},
          {"FAR", float_literal(o.far)},
          {"LIGHTS", lights_source(scene)},
-         {"GEOMETRY", geometry.arrays},
+         {"GEOMETRY", geometry.arrays + glass.arrays},
+         {"GLASS_DECLARATIONS", glass.declarations},
+         {"GLASS_SETUP", glass.setup},
          {"OBJECTS", geometry.objects},
          {"SCENE", wrapped("\"", printable(scene_label), "\"")},
          {"VERSION", LITKIT_VERSION},

@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "codegen/glsl_expr.hpp"
+#include "codegen/glsl_parts.hpp"
 #include "litkit/equations.hpp"
 
 namespace litkit::glsl {
@@ -23,6 +24,8 @@ static_assert(static_cast<int>(equations::PreparedLight::Kind::Ambient) == 0 &&
                   static_cast<int>(equations::PreparedLight::Kind::Point) == 2 &&
                   static_cast<int>(equations::PreparedLight::Kind::Spot) == 3,
               "the GLSL LIGHT_* constants are the PreparedLight::Kind values");
+
+}  // namespace
 
 std::string header(Reflection reflection, Shading shading, std::string_view stage) {
     return "#version 330 core\n"
@@ -63,6 +66,8 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
            "//   fragment output: vec4 frag_color, the pixel value litkit defines, a multiple of\n"
            "//   1/255 (exact in RGBA8), alpha 1\n";
 }
+
+namespace {
 
 // The Material struct's fields for the parameters of docs/spec.md §9.1.
 std::string material_parameter_fields() {
@@ -131,8 +136,11 @@ std::string unrolled_shade(std::span<const Light> lights) {
     return text + "    return total;\n}\n";
 }
 
-// `lights`: the scene's lights, for a program specialised to them; none: the
-// general program, a loop over u_light_count lights of any kind.
+// shade() looping over u_light_count lights of any kind.
+std::string general_shade();
+
+}  // namespace
+
 std::string lighting_declarations(Reflection reflection, int light_capacity,
                                   std::optional<std::span<const Light>> lights) {
     std::string text =
@@ -199,45 +207,55 @@ std::string lighting_declarations(Reflection reflection, int light_capacity,
         text += '\n';
         text += print_function(function, options);
     }
-    if (lights) return text + unrolled_shade(*lights);
-    text +=
-        "\n"
-        "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
-        "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V,\n"
-        "// unclamped. Hand-written (the lights are uniforms here) and kept line for line\n"
-        "// parallel to equations::shade_point: change one, change the other.\n"
-        "vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {\n"
-        "    vec3 total = vec3(0.0);\n"
-        "    for (int i = 0; i < u_light_count; ++i) {\n"
-        "        vec3 radiance = u_lights[i].radiance;\n"
-        "        Incidence incidence;\n"
-        "        if (u_lights[i].kind == LIGHT_AMBIENT) {\n"
-        "            total = total + ambient_term(radiance, u_material);\n"
-        "            continue;\n"
-        "        } else if (u_lights[i].kind == LIGHT_DIRECTIONAL) {\n"
-        "            incidence = directional_incidence(u_lights[i].direction);\n"
-        "        } else if (u_lights[i].kind == LIGHT_POINT) {\n"
-        "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
-        "p);\n"
-        "        } else if (u_lights[i].kind == LIGHT_SPOT) {\n"
-        "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
-        "p);\n"
-        "            incidence.factor =\n"
-        "                incidence.factor * spot_factor(incidence.to_light, "
-        "u_lights[i].direction,\n"
-        "                                               u_lights[i].cos_cutoff, "
-        "u_lights[i].cos_inner,\n"
-        "                                               u_lights[i].exponent);\n"
-        "        } else {\n"
-        "            continue;  // no other kinds\n"
-        "        }\n"
-        "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, "
-        "u_material);\n"
-        "        total = total + direct_term(radiance, incidence.factor, reflected, u_material);\n"
-        "    }\n"
-        "    return total;\n"
-        "}\n";
-    return text;
+    return text + shade_text(lights);
+}
+
+namespace {
+
+std::string general_shade() {
+    return "\n"
+           "// I = sum over ambient lights of k_a*C*I_L + sum over the others of\n"
+           "// f*I_L*(k_d*D*C + k_s*S) at point p with unit normal N and unit V,\n"
+           "// unclamped. Hand-written (the lights are uniforms here) and kept line for line\n"
+           "// parallel to equations::shade_point: change one, change the other.\n"
+           "vec3 shade(vec3 p, vec3 normal, vec3 to_eye) {\n"
+           "    vec3 total = vec3(0.0);\n"
+           "    for (int i = 0; i < u_light_count; ++i) {\n"
+           "        vec3 radiance = u_lights[i].radiance;\n"
+           "        Incidence incidence;\n"
+           "        if (u_lights[i].kind == LIGHT_AMBIENT) {\n"
+           "            total = total + ambient_term(radiance, u_material);\n"
+           "            continue;\n"
+           "        } else if (u_lights[i].kind == LIGHT_DIRECTIONAL) {\n"
+           "            incidence = directional_incidence(u_lights[i].direction);\n"
+           "        } else if (u_lights[i].kind == LIGHT_POINT) {\n"
+           "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
+           "p);\n"
+           "        } else if (u_lights[i].kind == LIGHT_SPOT) {\n"
+           "            incidence = point_incidence(u_lights[i].position, u_lights[i].attenuation, "
+           "p);\n"
+           "            incidence.factor =\n"
+           "                incidence.factor * spot_factor(incidence.to_light, "
+           "u_lights[i].direction,\n"
+           "                                               u_lights[i].cos_cutoff, "
+           "u_lights[i].cos_inner,\n"
+           "                                               u_lights[i].exponent);\n"
+           "        } else {\n"
+           "            continue;  // no other kinds\n"
+           "        }\n"
+           "        Reflected reflected = reflect_light(normal, incidence.to_light, to_eye, "
+           "u_material);\n"
+           "        total = total + direct_term(radiance, incidence.factor, reflected, "
+           "u_material);\n"
+           "    }\n"
+           "    return total;\n"
+           "}\n";
+}
+
+}  // namespace
+
+std::string shade_text(std::optional<std::span<const Light>> lights) {
+    return lights ? unrolled_shade(*lights) : general_shade();
 }
 
 // litkit::to_pixel on the GPU.
@@ -264,8 +282,6 @@ std::string to_pixel_function(bool gamma_one) {
            "    return level / 255.0;\n"
            "}\n";
 }
-
-}  // namespace
 
 namespace {
 

@@ -23,10 +23,13 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "codegen/gl_glass.hpp"
 #include "codegen/gl_scene.hpp"
+#include "codegen/glsl_glass.hpp"
 #include "litkit/glsl.hpp"
 #include "litkit/validate.hpp"
 #include "scene/float_range.hpp"
@@ -99,6 +102,13 @@ std::string gl_string(GLenum name) {
     return text ? reinterpret_cast<const char*>(text) : "?";
 }
 
+// The glass programs' scene as opengl_core.inc takes it.
+core::GlassScene glass_scene(const detail::GlassData& data) {
+    return {data.triangles, data.nodes,        data.objects,
+            data.faces,     data.node_count,   data.room_ior,
+            data.max_depth, data.min_distance, data.background_light};
+}
+
 }  // namespace
 
 struct GlRenderer::Impl {
@@ -107,11 +117,17 @@ struct GlRenderer::Impl {
     std::optional<core::HeadlessContext> context;
     Scene scene;  // as drawn
     RenderOptions options;
-    std::map<std::pair<Reflection, Shading>, GLuint> programs;
+    // By reflection, shading and glass (t > 0).
+    std::map<std::tuple<Reflection, Shading, bool>, GLuint> programs;
     std::vector<core::GpuMesh> meshes;
     std::vector<core::DrawItem> items;
     std::vector<core::LightData> lights;
     std::optional<core::OffscreenTarget> target;
+    // Where some object is glass: the scene for its rays, on the CPU (for
+    // updates of the materials) and on the GPU.
+    detail::GlassData glass_data;
+    std::vector<detail::GlObject> glass_objects;  // materials and models only
+    std::optional<core::GlassBuffers> glass;
     core::FrameSettings frame{};
     std::size_t triangles = 0;
     std::vector<std::uint8_t> bands[2];  // read_rgb_in_step's band buffers, kept between frames
@@ -125,6 +141,7 @@ struct GlRenderer::Impl {
             }
         }
         target.reset();
+        glass.reset();
         for (core::GpuMesh& mesh : meshes) core::release_mesh(mesh);
         for (const auto& [key, program] : programs) glDeleteProgram(program);
     }
@@ -157,7 +174,6 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
 
 void GlRenderer::update(const Scene& input) {
     check_renderable(input);  // litkit/validate.hpp: the renderers' preconditions
-    detail::refuse_refraction(input, "the OpenGL backend");
     detail::refuse_samples(input, "the OpenGL backend");
     // Drawn as the CPU renderer draws it: lengths brought into a float's
     // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
@@ -182,7 +198,9 @@ void GlRenderer::update(const Scene& input) {
         same = same_geometry(scene.objects[i], gl.scene.objects[i]) &&
                normal_options(scene, scene.objects[i]) ==
                    normal_options(gl.scene, gl.scene.objects[i]) &&
-               models(scene, gl.options, i) == models(gl.scene, gl.options, i);
+               models(scene, gl.options, i) == models(gl.scene, gl.options, i) &&
+               (scene.objects[i].material.transmission > 0.0f) ==
+                   (gl.scene.objects[i].material.transmission > 0.0f);
     if (!same) {
         GlRenderer fresh(scene, gl.options, CurrentContext{}, gl.context.has_value());
         std::swap(impl_, fresh.impl_);
@@ -195,6 +213,12 @@ void GlRenderer::update(const Scene& input) {
             gl.lights.push_back(light_data(light));
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             gl.items[i].material = material_data(scene.objects[i].material);
+        if (gl.glass) {
+            for (std::size_t i = 0; i < scene.objects.size(); ++i)
+                gl.glass_objects[i].material = scene.objects[i].material;
+            detail::update_glass_data(gl.glass_data, scene, gl.glass_objects);
+            gl.glass->update(glass_scene(gl.glass_data));
+        }
         set_frame(gl, scene);
         gl.scene = scene;
     } catch (const std::runtime_error& error) {
@@ -208,7 +232,6 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
 GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
     check_renderable(input);  // before any OpenGL is set up
-    detail::refuse_refraction(input, "the OpenGL backend");
     detail::refuse_samples(input, "the OpenGL backend");
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));  // as in update
     Impl& gl = *impl_;
@@ -235,31 +258,57 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
 
         const Reflection scene_reflection = scene.reflection.value_or(options.fallback_reflection);
         const Shading scene_shading = scene.shading.value_or(options.fallback_shading);
+        // Glass (docs/spec.md §10): the programs of objects with t > 0 trace
+        // rays that may meet any object, so they know every model.
+        const bool glass = detail::has_glass(scene);
+        std::vector<Reflection> models;
+        for (const SceneObject& object : scene.objects) {
+            const Reflection reflection = object.reflection.value_or(scene_reflection);
+            if (std::find(models.begin(), models.end(), reflection) == models.end())
+                models.push_back(reflection);
+        }
         gl.meshes.reserve(scene.objects.size());
         for (const SceneObject& object : scene.objects) {
             const Reflection reflection = object.reflection.value_or(scene_reflection);
             const Shading shading = object.shading.value_or(scene_shading);
-            auto [found, added] = gl.programs.try_emplace({reflection, shading}, 0);
+            const bool glass_object = object.material.transmission > 0.0f;
+            auto [found, added] = gl.programs.try_emplace({reflection, shading, glass_object}, 0);
             if (added) {
                 const glsl::Shaders shaders =
-                    glsl::generate_for_scene(reflection, shading, lights, scene.output.gamma);
+                    glass_object
+                        ? glsl::generate_glass(
+                              {reflection, shading, models, lights, scene.output.gamma})
+                        : glsl::generate_for_scene(reflection, shading, lights, scene.output.gamma);
                 try {
                     found->second = core::link_program(shaders.vertex, shaders.fragment);
                 } catch (const std::runtime_error& error) {
                     throw GlError(error.what() + lights_hint(capacity));
                 }
             }
-            const detail::GlObject data =
+            detail::GlObject data =
                 detail::gl_object(object, reflection, shading, normal_options(scene, object),
                                   scene.built_meshes.get());
             gl.meshes.push_back(core::upload_mesh(data.vertices, data.indices));
             gl.triangles += data.triangles;
+            if (glass) gl.glass_objects.push_back(std::move(data));
         }
-        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (glass) {
+            gl.glass_data = detail::glass_data(scene, gl.glass_objects);
+            gl.glass.emplace(glass_scene(gl.glass_data));
+            // Only the materials and models are kept, for update().
+            for (detail::GlObject& object : gl.glass_objects)
+                object.vertices = {}, object.indices = {};
+            gl.glass_data.triangles = {}, gl.glass_data.nodes = {}, gl.glass_data.faces = {};
+        }
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const SceneObject& object = scene.objects[i];
+            const bool glass_object = object.material.transmission > 0.0f;
             gl.items.push_back(
-                {gl.programs.at({scene.objects[i].reflection.value_or(scene_reflection),
-                                 scene.objects[i].shading.value_or(scene_shading)}),
-                 &gl.meshes[i], material_data(scene.objects[i].material)});
+                {gl.programs.at({object.reflection.value_or(scene_reflection),
+                                 object.shading.value_or(scene_shading), glass_object}),
+                 &gl.meshes[i], material_data(object.material),
+                 glass_object ? static_cast<int>(i) : -1, glass ? gl.glass_data.face_base[i] : 0});
+        }
 
         set_frame(gl, scene);
         gl.scene = scene;
@@ -363,7 +412,8 @@ void GlRenderer::render_into(Image& image) {
     Impl& gl = *impl_;
     try {
         if (gl.context) gl.context->make_current();
-        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
+        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items,
+                         gl.glass ? &*gl.glass : nullptr);
     } catch (const std::runtime_error& error) {
         throw GlError(error.what());
     }
@@ -386,7 +436,8 @@ void GlRenderer::draw_to(unsigned framebuffer) {
     Impl& gl = *impl_;
     try {
         if (gl.context) gl.context->make_current();
-        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items);
+        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items,
+                         gl.glass ? &*gl.glass : nullptr);
     } catch (const std::runtime_error& error) {
         throw GlError(error.what());
     }

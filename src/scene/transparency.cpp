@@ -70,17 +70,6 @@ std::optional<std::size_t> first_transparent_object(const Scene& scene) {
     return std::nullopt;
 }
 
-void refuse_refraction(const Scene& scene, std::string_view drawer) {
-    const std::optional<std::size_t> index = first_transparent_object(scene);
-    if (!index) return;
-    const SceneObject& object = scene.objects[*index];
-    std::string who = "objects[" + std::to_string(*index) + "]";
-    if (!object.name.empty()) who += " '" + object.name + "'";
-    throw ArgumentError(std::string(drawer) + " does not draw refraction yet (docs/spec.md §10): " +
-                        who + " has transmission " + number_text(object.material.transmission) +
-                        "; the CPU backend does (--backend cpu)");
-}
-
 void refuse_samples(const Scene& scene, std::string_view drawer) {
     if (scene.output.samples == 1) return;
     throw ArgumentError(std::string(drawer) +

@@ -23,13 +23,8 @@ std::string closed_mesh_problem(const SceneObject& object, const Mesh& mesh);
 // The first object whose transmission is above 0, if any.
 std::optional<std::size_t> first_transparent_object(const Scene& scene);
 
-// Throws ArgumentError when some object of the scene has a transmission
-// above 0: `drawer` ("the OpenGL backend") does not draw refraction yet; the
-// message names the object and the CPU backend, which does.
-void refuse_refraction(const Scene& scene, std::string_view drawer);
-
 // Throws ArgumentError when the scene asks for more than one sample per
-// pixel (docs/spec.md §11), which `drawer` does not draw yet either; the
+// pixel (docs/spec.md §11), which `drawer` does not draw yet; the
 // message names the CPU backend, which does.
 void refuse_samples(const Scene& scene, std::string_view drawer);
 
