@@ -99,7 +99,7 @@ int run_turntable(const TurntableArguments& arguments) {
     const std::string target =
         arguments.output.empty() ? output_beside(files, ".gif").string() : arguments.output;
     // "DIR/" or an existing folder: numbered PNGs; a .png name: an animated
-    // PNG; anything else: one GIF.
+    // PNG; a .gif name (or standard output): one GIF; any other name: refused.
     const fs::path output(target);
     Written writes = Written::Gif;
     if (target.ends_with('/') || fs::is_directory(target)) {
