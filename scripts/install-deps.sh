@@ -47,9 +47,10 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pil python3-ipython
   # The package (pyproject.toml, setup.py): pip into a virtual environment
   # and `python3 -m build`, offline, with Debian's setuptools and wheel; the
-  # notebook example run headlessly in its test (nbclient, an IPython kernel).
+  # notebook example run headlessly in its test (nbclient, an IPython kernel);
+  # the sweep example on a Dask cluster of local worker processes.
   python3-venv python3-pip python3-setuptools python3-wheel python3-build
-  python3-nbclient python3-nbformat python3-ipykernel
+  python3-nbclient python3-nbformat python3-ipykernel python3-dask python3-distributed
   # The API reference (target docs; its test fails on any warning) and the
   # man page made from --help, rendered by groff in its test.
   doxygen help2man groff-base

@@ -3,9 +3,10 @@
 # Prints one SHA-256 line per output of a fixed set of litkit runs over every
 # example and bench scene: renders on the CPU (1 and 2 threads) and through
 # OpenGL, the compare sheet (every reflection x shading pair), every normals
-# weighting, a turntable, explain --json of a pixel, and the GLSL and C++
-# exports. Used to show that a change which should leave every picture alone
-# did: run it before and after and diff the two lists.
+# weighting, a turntable (GIF, PNG frames, animated PNG), explain --json of
+# a pixel, and the GLSL and C++ exports. Used to show that a change which
+# should leave every picture alone did: run it before and after and diff the
+# two lists.
 #
 #   scripts/picture-hashes.sh [LITKIT] > hashes.txt
 set -uo pipefail
@@ -39,3 +40,4 @@ for scene in examples/*.toml examples/multi-file/*.toml bench/scenes/*.toml; do
 done
 run default-turntable turntable --frames 8 --width 160 --height 120 -o "$out/default-turntable/t.gif"
 run default-turntable-png turntable --frames 4 --width 160 --height 120 -o "$out/default-turntable-png/d/"
+run default-turntable-apng turntable --frames 4 --width 160 --height 120 -o "$out/default-turntable-apng/t.png"

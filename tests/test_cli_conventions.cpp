@@ -76,8 +76,9 @@ TEST_F(Conventions, CompareRefusesAnOutputNameThatIsNotPng) {
 TEST_F(Conventions, TurntableRefusesAFileNameThatIsNotAnAnimation) {
     const CommandRun run = cli("turntable scene.toml --frames 2" + small + "-o spin.mp4");
     EXPECT_EQ(run.status, 2) << run.output;
-    EXPECT_NE(run.output.find("error: -o spin.mp4: litkit turntable writes an animated GIF, or "
-                              "PNG frames into a folder named DIR/; name the output with .gif"),
+    EXPECT_NE(run.output.find("error: -o spin.mp4: litkit turntable writes an animated GIF or "
+                              "PNG, or PNG frames into a folder named DIR/; name the output "
+                              "with .gif or .png"),
               std::string::npos)
         << run.output;
     EXPECT_EQ(written(), std::vector<std::string>{});

@@ -45,6 +45,36 @@ std::string encode_png(const Image& image, int compression_level = default_png_c
 /// Throws IoError (Access::Write) on failure, leaving any old file untouched.
 void write_png(const Image& image, const std::filesystem::path& path);
 
+/// An animated PNG (APNG, the PNG specification's acTL, fcTL and fdAT
+/// chunks), put together frame by frame: each frame is deflated as
+/// encode_png deflates a picture when it is added, and only its compressed
+/// bytes are kept. Full colour, every frame whole (no palette, no
+/// differences between frames); it loops forever. The first frame is also
+/// the file's plain PNG picture, which a reader that knows no APNG shows.
+class AnimatedPng {
+  public:
+    /// Each frame shown `delay_ms` milliseconds (1–65535), deflated at zlib
+    /// `compression_level` 0–9 (ArgumentError otherwise).
+    explicit AnimatedPng(int delay_ms = 40, int compression_level = default_png_compression);
+    /// Adds the next frame. Every frame must have the first one's size, and
+    /// pixels (ArgumentError otherwise).
+    void add(const Image& frame);
+    /// The frames added so far.
+    int frames() const { return static_cast<int>(streams_.size()); }
+    /// The file's bytes. Throws ArgumentError before the first frame.
+    std::string bytes() const;
+    /// Writes bytes() to `path`, whole or not at all (write_file_atomically).
+    /// Throws IoError (Access::Write) on failure, leaving any old file untouched.
+    void write(const std::filesystem::path& path) const;
+
+  private:
+    int delay_ms_;
+    int compression_level_;
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<std::string> streams_;  // each frame's zlib stream
+};
+
 /// Reads an 8-bit RGB or RGBA PNG (alpha dropped). Throws IoError.
 Image read_png(const std::filesystem::path& path);
 

@@ -171,6 +171,18 @@ void bind_scene(py::module_& module) {
             "Checked as a mesh file is (shapes, finite coordinates, indices in range) and with "
             "the scene; raises litkit.Error and leaves the scene as it was. Returns the object's "
             "index. A scene holding one has no TOML (to_toml and to_dict raise ArgumentError).")
+        .def(py::pickle(
+            // A scene pickles as its TOML text (mesh files by absolute path),
+            // read back as litkit.loads reads text: another process, a
+            // Dask worker, gets the same scene where it can read the same files.
+            [](const litkit::Scene& s) { return py::make_tuple(litkit::scene_to_toml(s)); },
+            [](const py::tuple& state) {
+                if (state.size() != 1 || !py::isinstance<py::str>(state[0]))
+                    throw litkit::ArgumentError("Scene: a pickled scene is one TOML text");
+                const std::string text = state[0].cast<std::string>();
+                py::gil_scoped_release unlocked;  // may read mesh files
+                return litkit::parse_scene(text, "pickled scene");
+            }))
         .def("copy", [](const litkit::Scene& s) { return litkit::Scene(s); })
         .def("__copy__", [](const litkit::Scene& s) { return litkit::Scene(s); })
         .def("__deepcopy__", [](const litkit::Scene& s, py::dict) { return litkit::Scene(s); })

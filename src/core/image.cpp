@@ -234,13 +234,17 @@ void append_chunk(std::string& out, const char (&type)[5], const unsigned char* 
 
 }  // namespace
 
-std::string encode_png(const Image& image, int compression_level) {
+namespace {
+
+// The zlib stream of `image`'s filtered rows (docs/design.md, "PNG"): what
+// a PNG's IDAT chunks, or an animated PNG frame's IDAT or fdAT chunks, hold.
+std::string zlib_stream_of(const Image& image, int compression_level, const char* caller) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-        throw ArgumentError("encode_png: image has no pixels or an inconsistent size");
+        throw ArgumentError(std::string(caller) + ": image has no pixels or an inconsistent size");
     }
     if (compression_level < 0 || compression_level > 9)
-        throw ArgumentError("encode_png: compression level must be 0-9");
+        throw ArgumentError(std::string(caller) + ": compression level must be 0-9");
 
     const std::size_t filtered_bytes =
         (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
@@ -291,25 +295,104 @@ std::string encode_png(const Image& image, int compression_level) {
     stream.append(reinterpret_cast<const char*>(upper.bytes.get()), upper.size);
     if (lower.bytes) stream.append(reinterpret_cast<const char*>(lower.bytes.get()), lower.size);
     append_u32(stream, static_cast<std::uint32_t>(adler));
+    return stream;
+}
 
-    std::string png;
-    png.reserve(stream.size() + stream.size() / idat_chunk_bytes * 12 + 64);
+void put_u32(unsigned char* at, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) at[i] = static_cast<unsigned char>(value >> (24 - 8 * i));
+}
+
+// The signature and the IHDR chunk of an 8-bit RGB picture.
+void append_header(std::string& png, int width, int height) {
     png.append("\x89PNG\r\n\x1a\n", 8);
     unsigned char ihdr[13] = {};
-    for (int i = 0; i < 4; ++i) {
-        ihdr[i] =
-            static_cast<unsigned char>(static_cast<std::uint32_t>(image.width) >> (24 - 8 * i));
-        ihdr[4 + i] =
-            static_cast<unsigned char>(static_cast<std::uint32_t>(image.height) >> (24 - 8 * i));
-    }
+    put_u32(ihdr, static_cast<std::uint32_t>(width));
+    put_u32(ihdr + 4, static_cast<std::uint32_t>(height));
     ihdr[8] = 8;  // bits per channel
     ihdr[9] = 2;  // RGB; compression, filter method and interlace stay 0
     append_chunk(png, "IHDR", ihdr, sizeof ihdr);
+}
+
+}  // namespace
+
+std::string encode_png(const Image& image, int compression_level) {
+    const std::string stream = zlib_stream_of(image, compression_level, "encode_png");
+    std::string png;
+    png.reserve(stream.size() + stream.size() / idat_chunk_bytes * 12 + 64);
+    append_header(png, image.width, image.height);
     const auto* data = reinterpret_cast<const unsigned char*>(stream.data());
     for (std::size_t at = 0; at < stream.size(); at += idat_chunk_bytes)
         append_chunk(png, "IDAT", data + at, std::min(idat_chunk_bytes, stream.size() - at));
     append_chunk(png, "IEND", nullptr, 0);
     return png;
+}
+
+AnimatedPng::AnimatedPng(int delay_ms, int compression_level)
+    : delay_ms_(delay_ms), compression_level_(compression_level) {
+    if (delay_ms < 1 || delay_ms > 65535)
+        throw ArgumentError("AnimatedPng: a frame's delay must be 1-65535 ms");
+    if (compression_level < 0 || compression_level > 9)
+        throw ArgumentError("AnimatedPng: compression level must be 0-9");
+}
+
+void AnimatedPng::add(const Image& frame) {
+    if (!streams_.empty() && (frame.width != width_ || frame.height != height_)) {
+        throw ArgumentError("AnimatedPng: frame " + std::to_string(streams_.size()) + " is " +
+                            std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                            ", the first " + std::to_string(width_) + "x" +
+                            std::to_string(height_) + "; every frame must have one size");
+    }
+    streams_.push_back(zlib_stream_of(frame, compression_level_, "AnimatedPng"));
+    width_ = frame.width;
+    height_ = frame.height;
+}
+
+std::string AnimatedPng::bytes() const {
+    if (streams_.empty()) throw ArgumentError("AnimatedPng: no frames");
+    std::size_t total = 64;
+    for (const std::string& stream : streams_) total += stream.size() + 64;
+    std::string png;
+    png.reserve(total);
+    append_header(png, width_, height_);
+    // acTL: the number of frames, and of plays (0: loop forever).
+    unsigned char actl[8] = {};
+    put_u32(actl, static_cast<std::uint32_t>(streams_.size()));
+    append_chunk(png, "acTL", actl, sizeof actl);
+    // fcTL and fdAT chunks share one sequence, from 0; IDAT has none.
+    std::uint32_t sequence = 0;
+    std::vector<unsigned char> data;
+    for (std::size_t k = 0; k < streams_.size(); ++k) {
+        // fcTL: sequence, the frame's size and offset (the whole picture),
+        // its delay as delay_ms/1000 s, dispose_op NONE, blend_op SOURCE.
+        unsigned char fctl[26] = {};
+        put_u32(fctl, sequence++);
+        put_u32(fctl + 4, static_cast<std::uint32_t>(width_));
+        put_u32(fctl + 8, static_cast<std::uint32_t>(height_));
+        fctl[20] = static_cast<unsigned char>(delay_ms_ >> 8);
+        fctl[21] = static_cast<unsigned char>(delay_ms_);
+        fctl[22] = 1000 >> 8;
+        fctl[23] = 1000 & 0xff;
+        append_chunk(png, "fcTL", fctl, sizeof fctl);
+        const std::string& stream = streams_[k];
+        const auto* bytes = reinterpret_cast<const unsigned char*>(stream.data());
+        for (std::size_t at = 0; at < stream.size(); at += idat_chunk_bytes) {
+            const std::size_t size = std::min(idat_chunk_bytes, stream.size() - at);
+            if (k == 0) {  // the first frame is the default image, for plain PNG readers
+                append_chunk(png, "IDAT", bytes + at, size);
+                continue;
+            }
+            data.resize(4 + size);
+            put_u32(data.data(), sequence++);
+            std::memcpy(data.data() + 4, bytes + at, size);
+            append_chunk(png, "fdAT", data.data(), data.size());
+        }
+    }
+    append_chunk(png, "IEND", nullptr, 0);
+    return png;
+}
+
+void AnimatedPng::write(const std::filesystem::path& path) const {
+    write_file_atomically(path, bytes());
 }
 
 void write_png(const Image& image, const std::filesystem::path& path) {
