@@ -25,36 +25,10 @@ namespace {
 
 using litkit_test::Agreement;
 using litkit_test::agreement;
+using litkit_test::edge_agreement;
+using litkit_test::EdgeAgreement;
 using litkit_test::labels;
 using litkit_test::required_fraction;
-
-// The pixels a silhouette crosses: some of their samples see an object and
-// some the background, so the labels drawn with the scene's samples (gamma
-// 1, background black, every label's blue 255) have a blue strictly between
-// 0 and 255 there. `within`: of those, every channel within 2/255.
-struct EdgeAgreement {
-    std::size_t edges = 0;
-    std::size_t within = 0;
-    double fraction() const { return edges ? double(within) / double(edges) : 0.0; }
-};
-
-EdgeAgreement edge_agreement(const litkit::Image& a, const litkit::Image& b,
-                             const litkit::Image& sampled_labels) {
-    EdgeAgreement result;
-    for (int y = 0; y < a.height; ++y) {
-        for (int x = 0; x < a.width; ++x) {
-            const int blue = sampled_labels.pixel(x, y)[2];
-            if (blue == 0 || blue == 255) continue;
-            ++result.edges;
-            int difference = 0;
-            for (int c = 0; c < 3; ++c)
-                difference =
-                    std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
-            result.within += difference <= 2;
-        }
-    }
-    return result;
-}
 
 // A sphere, a cube and a spot-lit cube (the cone's edge across it) under
 // gamma 2.2, each with a dim ambient light; rotated so that the silhouettes

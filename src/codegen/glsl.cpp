@@ -70,7 +70,8 @@ std::string header(Reflection reflection, Shading shading, std::string_view stag
                    : "//   fragment output: vec4 frag_color, one sample's light L_k clamped to [0, "
                      "1], linear\n"
                      "//   (no gamma, no rounding), alpha 1: one pass of anti-aliasing (litkit's\n"
-                     "//   docs/spec.md §11; the host averages the passes, then applies gamma)\n");
+                     "//   docs/spec.md, section 11; the host averages the passes, then applies\n"
+                     "//   gamma)\n");
 }
 
 // The Material struct's fields for the parameters of docs/spec.md §9.1.
@@ -277,9 +278,9 @@ std::string to_pixel_function(bool gamma_one) {
 // A sample's L_k for anti-aliasing: what to_pixel clamps, left linear.
 std::string sample_light_function() {
     return "\n"
-           "// One sample's light L_k of docs/spec.md §11: clamp(I, 0, 1) as litkit::to_pixel\n"
-           "// clamps (NaN -> 0), linear: the host averages the samples, then applies gamma\n"
-           "// and rounds.\n"
+           "// One sample's light L_k (docs/spec.md, section 11): clamp(I, 0, 1) as\n"
+           "// litkit::to_pixel clamps (NaN -> 0), linear: the host averages the samples,\n"
+           "// then applies gamma and rounds.\n"
            "vec3 sample_light(vec3 intensity) {\n"
            "    return mix(vec3(0.0), min(intensity, vec3(1.0)), greaterThan(intensity, "
            "vec3(0.0)));\n"

@@ -28,9 +28,4 @@ std::optional<std::size_t> first_transparent_object(const Scene& scene);
 // message names the object and the CPU backend, which does.
 void refuse_refraction(const Scene& scene, std::string_view drawer);
 
-// Throws ArgumentError when the scene asks for more than one sample per
-// pixel (docs/spec.md §11), which `drawer` does not draw yet either; the
-// message names the CPU backend, which does.
-void refuse_samples(const Scene& scene, std::string_view drawer);
-
 }  // namespace litkit::detail
