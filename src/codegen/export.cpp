@@ -510,7 +510,7 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
     const Rgb8 bg = to_rgb8(scene.output.background);
     const std::string program = fill_template(
         detail::program_template_text,
-        {{"CORE", detail::opengl_core_text},
+        {{"CORE", std::string(detail::opengl_core_text) + "\n" + detail::opengl_samples_text},
          {"SHADERS", shaders_source(models, scene)},
          {"WIDTH", std::to_string(scene.output.width)},
          {"HEIGHT", std::to_string(scene.output.height)},

@@ -38,6 +38,7 @@ namespace litkit {
 namespace {
 namespace core {
 #include "gl/opengl_core.inc"
+#include "gl/opengl_samples.inc"
 }  // namespace core
 
 // libepoxy loads libEGL, and libOpenGL or libGL, on first use and aborts the
@@ -369,7 +370,7 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb,
 
 // The frame at the scene's samples per pixel (more than one) into `image`:
 // one pass per sample with the SampleLight programs, summed and resolved by
-// opengl_core.inc's draw_samples.
+// opengl_samples.inc's draw_samples.
 void draw_samples(GlRenderer::Impl& gl, Image& image) {
     try {
         if (gl.context) gl.context->make_current();
@@ -379,10 +380,11 @@ void draw_samples(GlRenderer::Impl& gl, Image& image) {
             gl.sample_target.reset();
             gl.sample_target.emplace(width, height, GL_RGBA32F);
         }
-        if (gl.sample_programs.empty()) {  // the same models and lights as gl.programs
+        if (gl.sample_programs.size() != gl.programs.size()) {  // their models and lights
             std::vector<Light> lights;
             for (const SceneLight& light : gl.scene.lights) lights.push_back(light.light);
             for (const auto& [models, program] : gl.programs) {
+                if (gl.sample_programs.count(program)) continue;  // linked before a failure
                 const glsl::Shaders shaders = glsl::generate_for_scene(
                     models.first, models.second, lights, gl.scene.output.gamma,
                     glsl::FragmentOutput::SampleLight);
