@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# bench/samples.sh [--rounds R] [--frames K] [--width W] [--height H]
+# bench/samples.sh [--rounds R] [--frames K] [--width W] [--height H] [--backend cpu|gl]
 #
-# The cost of anti-aliasing (docs/spec.md §11) on the CPU renderer: the
+# The cost of anti-aliasing (docs/spec.md §11) on the CPU renderer (or,
+# with --backend gl, the OpenGL backend; LP_NUM_THREADS as the caller sets
+# it for Mesa's llvmpipe): the
 # default scene (one cube) and scenes/fill.toml (every pixel covered) at
 # 1920×1080, each drawn by `litkit bench` with 1, 4 and 16 samples per pixel
 # in one run, the counts taking turns within each round. Prints, per scene,
@@ -22,13 +24,15 @@ rounds=5
 frames=10
 width=1920
 height=1080
+backend=cpu
 while [ $# -gt 0 ]; do
   case "$1" in
     --rounds) rounds=$2; shift ;;
     --frames) frames=$2; shift ;;
     --width) width=$2; shift ;;
     --height) height=$2; shift ;;
-    *) echo "usage: $0 [--rounds R] [--frames K] [--width W] [--height H]" >&2; exit 2 ;;
+    --backend) backend=$2; shift ;;
+    *) echo "usage: $0 [--rounds R] [--frames K] [--width W] [--height H] [--backend cpu|gl]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -42,12 +46,12 @@ litkit=$build/litkit
 
 # The median frame time, in ms, of `litkit bench` with these arguments.
 frame_ms() {
-  "$litkit" bench "$@" --width "$width" --height "$height" --threads "$threads" \
-    --frames "$frames" | sed -n -E 's/^frames: .*median ([0-9.]+) ms.*/\1/p'
+  "$litkit" bench "$@" --width "$width" --height "$height" --backend "$backend" \
+    $([ "$backend" = cpu ] && echo --threads "$threads") --frames "$frames" | sed -n -E 's/^frames: .*median ([0-9.]+) ms.*/\1/p'
 }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-echo "bench/samples.sh: ${width}x${height}, $threads threads, $rounds rounds of $frames frames"
+echo "bench/samples.sh: ${width}x${height}, backend $backend, $threads threads, $rounds rounds of $frames frames"
 for scene in default "$here/scenes/fill.toml"; do
   args=()
   [ "$scene" = default ] || args=("$scene")
@@ -67,5 +71,6 @@ for scene in default "$here/scenes/fill.toml"; do
   unset times
 done
 peak=$(/usr/bin/time -f '%M' "$litkit" render --width "$width" --height "$height" --samples 16 \
-         --threads "$threads" -o "$build/samples-16.png" 2>&1 >/dev/null | tail -1)
+         --backend "$backend" $([ "$backend" = cpu ] && echo --threads "$threads") \
+         -o "$build/samples-16.png" 2>&1 >/dev/null | tail -1)
 echo "peak memory, default scene, ${width}x${height}, 16 samples: $((peak / 1024)) MiB ($peak KiB)"

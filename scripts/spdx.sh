@@ -14,8 +14,8 @@
 # .cmake, .cmake.in) and JavaScript (.js .mjs), as git lists them (every file
 # outside build* folders where the tree is no git checkout). Not: test data
 # (tests/data, tests/bad), the files embedded as text into the programs
-# `litkit export` writes (src/gl/opengl_core.inc and the other .in templates:
-# their text is the export's), shaders and notebooks.
+# `litkit export` writes (src/gl/opengl_core.inc, opengl_samples.inc and the
+# .in templates: their text is the export's), shaders and notebooks.
 set -euo pipefail
 
 tag="SPDX-License-Identifier: MIT"
@@ -24,7 +24,7 @@ tag="SPDX-License-Identifier: MIT"
 comment_of() {
   local file=$1
   case "$file" in
-    tests/data/* | tests/bad/* | */node_modules/* | src/gl/opengl_core.inc) return ;;
+    tests/data/* | tests/bad/* | */node_modules/* | src/gl/opengl_core.inc | src/gl/opengl_samples.inc) return ;;
     *.cpp | *.hpp | *.h | *.c | *.cc | *.js | *.mjs) echo "//" ;;
     *.py | *.pyi | *.sh | *.cmake | *.cmake.in | CMakeLists.txt | */CMakeLists.txt) echo "#" ;;
   esac

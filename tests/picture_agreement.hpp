@@ -8,7 +8,8 @@
 // each pixel with the object covering it; a pixel counts when its 3×3
 // neighbourhood carries one label. Rasterisers may disagree about which
 // surface owns a pixel on a silhouette; they must not disagree about its
-// lighting.
+// lighting. With several samples per pixel the silhouettes' pixels are held
+// to it as well (edge_agreement): they are averages of many samples.
 #pragma once
 
 #include <algorithm>
@@ -90,6 +91,36 @@ inline Agreement agreement(const litkit::Image& a, const litkit::Image& b,
             ++result.counted;
             result.within += difference <= 2;
             result.worst = std::max(result.worst, difference);
+        }
+    }
+    return result;
+}
+
+// With several samples per pixel (docs/spec.md §11): the pixels a
+// silhouette crosses, some of their samples seeing an object and some the
+// background, so that labels() drawn with the scene's samples (gamma 1,
+// background black, every label's blue 255) has a blue strictly between 0
+// and 255 there; `within`: of those, the pixels of `a` and `b` within 2/255
+// in every channel.
+struct EdgeAgreement {
+    std::size_t edges = 0;
+    std::size_t within = 0;
+    double fraction() const { return edges ? double(within) / double(edges) : 0.0; }
+};
+
+inline EdgeAgreement edge_agreement(const litkit::Image& a, const litkit::Image& b,
+                                    const litkit::Image& sampled_labels) {
+    EdgeAgreement result;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            const int blue = sampled_labels.pixel(x, y)[2];
+            if (blue == 0 || blue == 255) continue;
+            ++result.edges;
+            int difference = 0;
+            for (int c = 0; c < 3; ++c)
+                difference =
+                    std::max(difference, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+            result.within += difference <= 2;
         }
     }
     return result;

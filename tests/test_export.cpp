@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <span>
 #include <sstream>
 #include <string>
@@ -133,7 +134,8 @@ material = { color = [120, 220, 140], ks = 0.7, shininess = 24 }
 )toml";
 
 // The models of docs/spec.md §9.1, one object each under every shading, and a
-// spot with a soft edge (§9.3) crossing them.
+// spot with a soft edge (§9.3) crossing them; 16 samples per pixel (§11) at
+// gamma 2.2.
 constexpr const char* family_scene = R"toml(
 [room]
 width = 12
@@ -151,6 +153,8 @@ shading = "phong"
 width = 320
 height = 240
 background = [30, 40, 60]
+gamma = 2.2
+samples = 16
 
 [[lights]]
 type = "ambient"
@@ -207,9 +211,9 @@ reflection = "gooch"
 material = { color = [220, 90, 70], ka = 0 }
 )toml";
 
-// Glass (docs/spec.md §10): a lens, an absorbing faceted cube and a flat
+// Glass (docs/spec.md §10): a lens, an absorbing faceted cube and a
 // gouraud-lit glass torus (not convex) before opaque objects of two models,
-// with gamma 2.2, for the glass programs of the exports.
+// with gamma 2.2 and 4 samples per pixel, for the glass programs of the exports.
 constexpr const char* glass_scene = R"toml(
 [room]
 width = 20
@@ -230,6 +234,7 @@ width = 320
 height = 240
 background = [30, 40, 60]
 gamma = 2.2
+samples = 4
 
 [[lights]]
 type = "ambient"
@@ -298,7 +303,8 @@ class Export : public ::testing::Test {
     // -Wall -Wextra -Wpedantic), runs it, and compares its picture with
     // `litkit render --backend gl` (the same OpenGL code on the same driver:
     // equal) and with the CPU backend (docs/spec.md's picture: within the
-    // cross-backend tolerance away from edges).
+    // cross-backend tolerance away from edges, and with several samples per
+    // pixel on the silhouettes too).
     void expect_program_draws_what_litkit_draws(const std::string& name,
                                                 std::string& configure_output) const {
         const Outcome exported = cli("export --format cpp " + name + ".toml -o program");
@@ -327,10 +333,21 @@ class Export : public ::testing::Test {
         EXPECT_EQ(exported_png.rgb, litkit::read_png(dir / "gl.png").rgb);
         const fs::path scene_file = dir / (name + ".toml");
         const litkit::Scene scene = litkit::load_scene(std::span(&scene_file, 1));
-        const litkit_test::Agreement a = litkit_test::agreement(
-            exported_png, litkit::read_png(dir / "cpu.png"), litkit_test::labels(scene));
+        const litkit::Image cpu_png = litkit::read_png(dir / "cpu.png");
+        litkit::Scene one_sample = scene;
+        one_sample.output.samples = 1;
+        const litkit_test::Agreement a =
+            litkit_test::agreement(exported_png, cpu_png, litkit_test::labels(one_sample));
         EXPECT_GT(a.counted, 320u * 240u / 10);
         EXPECT_GE(a.fraction(), litkit_test::required_fraction) << "worst " << a.worst << "/255";
+        if (scene.output.samples > 1) {
+            const litkit_test::EdgeAgreement e =
+                litkit_test::edge_agreement(exported_png, cpu_png, litkit_test::labels(scene));
+            EXPECT_GT(e.edges, 500u);
+            EXPECT_GE(e.fraction(), 0.98) << e.within << " of " << e.edges;
+            std::cout << scene.output.samples << " samples: " << e.within << " of " << e.edges
+                      << " edge pixels within 2/255\n";
+        }
     }
 
     fs::path dir;

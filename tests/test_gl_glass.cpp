@@ -94,6 +94,15 @@ TEST(GlGlass, MaxDepth2And16MatchTheCpu) {
         expect_gl_matches_cpu(max_depth_scene(depth), "max_depth_" + std::to_string(depth));
 }
 
+// Glass with anti-aliasing (docs/spec.md §11): each sample's pass traces
+// its own rays, and the passes are resolved as the CPU's samples are.
+TEST(GlGlass, GlassWithFourSamplesMatchesTheCpu) {
+    Scene scene = sphere_lens_scene();
+    scene.output.samples = 4;
+    scene.output.gamma = 2.2f;
+    expect_gl_matches_cpu(scene, "lens, 4 samples");
+}
+
 TEST(GlGlass, EveryGlassExampleMatchesTheCpu) {
     const std::filesystem::path examples = std::filesystem::path(LITKIT_SOURCE_DIR) / "examples";
     std::vector<std::filesystem::path> files;

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -919,3 +920,63 @@ INSTANTIATE_TEST_SUITE_P(AllPrograms, GlslProgram,
                          });
 
 }  // namespace
+
+// Anti-aliasing's programs (docs/spec.md §11) write a sample's clamped linear
+// light: the pixel programs but for the output function and what the
+// heading says of it, in every shading; they compile and link, in ASCII.
+TEST(GlslGenerate, SampleLightProgramsDifferOnlyInTheirOutput) {
+    const std::string validator = LITKIT_GLSLANG_VALIDATOR;
+    ASSERT_FALSE(validator.empty()) << "run scripts/install-deps.sh (glslang-tools)";
+    for (const Shading shading :
+         {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Faceted}) {
+        SCOPED_TRACE(std::string(litkit::to_string(shading)));
+        const litkit::Light lights[] = {litkit::Light{litkit::PointLight{}}};
+        const litkit::glsl::Shaders pixel =
+            litkit::glsl::generate(Reflection::Phong, shading, lights, 2.2f);
+        const litkit::glsl::Shaders sample = litkit::glsl::generate(
+            Reflection::Phong, shading, lights, 2.2f, litkit::glsl::FragmentOutput::SampleLight);
+        EXPECT_NE(sample.fragment.find("vec3 sample_light(vec3 intensity) {\n"
+                                       "    return mix(vec3(0.0), min(intensity, vec3(1.0)), "
+                                       "greaterThan(intensity, vec3(0.0)));\n}\n"),
+                  std::string::npos);
+        EXPECT_EQ(sample.fragment.find("to_pixel("), std::string::npos);
+        EXPECT_EQ(sample.fragment.find("u_inv_gamma"), std::string::npos);
+        // Everything after the heading, with the output function's name and
+        // definition swapped, is the pixel program's.
+        auto body = [](std::string text, const std::string& function) {
+            text.erase(0, text.find("\n\n"));
+            const std::size_t from = text.find("\nvec3 " + function + "(");
+            if (from != std::string::npos) {
+                const std::size_t comment = text.rfind("\n\n", from);
+                text.erase(comment, text.find("\n}\n", from) + 3 - comment);
+            }
+            for (std::size_t at; (at = text.find(function + "(")) != std::string::npos;)
+                text.replace(at, function.size(), "OUTPUT");
+            if (const std::size_t at = text.find("\nuniform float u_inv_gamma;\n");
+                at != std::string::npos)
+                text.erase(at, 28);
+            return text;
+        };
+        EXPECT_EQ(body(sample.vertex, "sample_light"), body(pixel.vertex, "to_pixel"));
+        EXPECT_EQ(body(sample.fragment, "sample_light"), body(pixel.fragment, "to_pixel"));
+        EXPECT_NE(body(sample.fragment, "sample_light").find("frag_color = vec4(OUTPUT("),
+                  std::string::npos);
+
+        TemporaryDirectory directory;
+        const std::filesystem::path vertex = directory.path() / "program.vert";
+        const std::filesystem::path fragment = directory.path() / "program.frag";
+        std::ofstream(vertex) << sample.vertex;
+        std::ofstream(fragment) << sample.fragment;
+        const CommandResult link = run_command(shell_quoted(validator) + " -l " +
+                                               shell_quoted(vertex) + " " + shell_quoted(fragment));
+        EXPECT_EQ(link.exit_code, 0) << link.output;
+        // No character beyond printable ASCII that the pixel program lacks.
+        auto others = [](const std::string& text) {
+            return std::count_if(text.begin(), text.end(), [](char c) {
+                return c != '\n' && (c < 0x20 || c >= 0x7f);  // char is signed: UTF-8 is < 0
+            });
+        };
+        EXPECT_EQ(others(sample.vertex), others(pixel.vertex));
+        EXPECT_EQ(others(sample.fragment), others(pixel.fragment));
+    }
+}

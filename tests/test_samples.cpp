@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Anti-aliasing (docs/spec.md §11): the key `[output] samples` as scene files
 // give it (read, checked with its place, suggested, written back), pictures
-// whose pixels are computed by hand, the command line's --samples, and the
-// drawers that refuse it. The pictures against an independent reference, in
+// whose pixels are computed by hand, the command line's --samples, and what
+// the exports write. The pictures against an independent reference, in
 // every model: tests/test_render_reference.cpp (SupersampledMatchesReference).
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -228,29 +229,52 @@ TEST(Supersampling, PixelsInsideOneFlatFaceKeepTheirColour) {
     }
 }
 
-TEST(Supersampling, DrawersThatCannotRefuseIt) {
+// The exports write the scene's samples (the pictures: tests/test_export.cpp
+// and tests/test_gl_samples.cpp). GLSL: the programs write a sample's light
+// and the fragment shader says what the host does, offsets listed; C++: the
+// pattern is the program's data. One sample: the pixel programs, no pattern
+// but the centre.
+TEST(Supersampling, ExportsWriteTheSamples) {
     Scene scene = default_scene();
     scene.output.samples = 4;
-    const fs::path folder = fs::temp_directory_path() / "litkit_samples_refused";
+    const fs::path folder = fs::temp_directory_path() / "litkit_samples_exported";
     fs::remove_all(folder);
-    const std::string expected_end =
-        " does not draw anti-aliasing yet (docs/spec.md §11): output.samples is 4; the CPU "
-        "backend does (--backend cpu), or set samples = 1";
-    try {
-        export_glsl(scene, folder);
-        ADD_FAILURE() << "export_glsl took samples = 4";
-    } catch (const ArgumentError& error) {
-        EXPECT_EQ(std::string(error.what()), "the GLSL export" + expected_end);
+    auto text_of = [](const fs::path& file) {
+        std::ifstream in(file);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (const fs::path& file : export_glsl(scene, folder / "glsl")) {
+        const std::string text = text_of(file);
+        EXPECT_EQ(text.find("to_pixel("), std::string::npos) << file;
+        if (file.extension() != ".frag") continue;
+        EXPECT_NE(text.find("frag_color = vec4(sample_light("), std::string::npos) << file;
+        for (const char* line :
+             {"//     k = 0: (0.375, 0.125)\n", "//     k = 1: (0.875, 0.375)\n",
+              "//     k = 2: (0.125, 0.625)\n", "//     k = 3: (0.625, 0.875)\n",
+              "//     round(255 * ((S + n * B^gamma) / 4)^(1/gamma)), halves up,"})
+            EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
     }
-    try {
-        export_cpp(scene, folder, "program", "scene");
-        ADD_FAILURE() << "export_cpp took samples = 4";
-    } catch (const ArgumentError& error) {
-        EXPECT_EQ(std::string(error.what()), "the C++ export" + expected_end);
-    }
-    EXPECT_FALSE(fs::exists(folder)) << "nothing is written";
+    export_cpp(scene, folder / "cpp", "program", "scene");
+    const std::string program = text_of(folder / "cpp" / "main.cpp");
+    EXPECT_NE(program.find("sample_pattern = {\n    {0.375f, 0.125f},\n    {0.875f, 0.375f},\n    "
+                           "{0.125f, 0.625f},\n    {0.625f, 0.875f},\n};"),
+              std::string::npos);
+    EXPECT_NE(program.find("frag_color = vec4(sample_light("), std::string::npos);
+    EXPECT_EQ(program.find("to_pixel("), std::string::npos);
+
     scene.output.samples = 1;  // the control
-    EXPECT_FALSE(export_glsl(scene, folder).empty());
+    for (const fs::path& file : export_glsl(scene, folder / "glsl1")) {
+        const std::string text = text_of(file);
+        EXPECT_EQ(text.find("Anti-aliasing"), std::string::npos) << file;
+        EXPECT_EQ(text.find("sample_light"), std::string::npos) << file;
+        if (file.extension() == ".frag") {
+            EXPECT_NE(text.find("frag_color = vec4(to_pixel("), std::string::npos) << file;
+        }
+    }
+    export_cpp(scene, folder / "cpp1", "program", "scene");
+    const std::string one = text_of(folder / "cpp1" / "main.cpp");
+    EXPECT_NE(one.find("sample_pattern = {\n    {0.5f, 0.5f},\n};"), std::string::npos);
+    EXPECT_EQ(one.find("sample_light("), std::string::npos);
     fs::remove_all(folder);
 }
 

@@ -566,6 +566,9 @@ TEST_F(Viewer, OpenGlBackendDrawsInTheWindowsOwnContext) {
     key("r");
     EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert")), 1)
         << "after an orbit and R";
+    key("a");  // 4 samples per pixel, drawn by the backend at rest (docs/spec.md §11)
+    EXPECT_LE(wait_for(rendered("--backend gl --reflection half-lambert --samples 4")), 1)
+        << "after A";
     key("q");
     EXPECT_EQ(wait_exit(), 0);
 }

@@ -29,7 +29,10 @@ class GlError : public Error {
 
 /// Draws a scene with OpenGL: the same picture as Renderer (docs/spec.md
 /// §1–§4), through the shaders of litkit/glsl.hpp. Keeps the programs and
-/// the uploaded meshes so that several frames cost only the drawing.
+/// the uploaded meshes so that several frames cost only the drawing. With
+/// several samples per pixel (`output.samples`, docs/spec.md §11) a frame is
+/// one pass per sample, averaged in linear light on the CPU as Renderer
+/// averages; the samples can change in update() without new programs.
 class GlRenderer {
   public:
     /// Creates the context, compiles the programs and uploads every object's

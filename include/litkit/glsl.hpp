@@ -22,7 +22,9 @@
 ///                                   kind: 0 ambient, 1 directional, 2 point, 3 spot;
 ///                                   the fields of equations::PreparedLight
 ///     float u_inv_gamma             1 / gamma
-///   output: the pixel value of docs/spec.md §4, already rounded to a multiple of 1/255.
+///   output: the pixel value of docs/spec.md §4, already rounded to a multiple of 1/255
+///           (FragmentOutput::Pixel), or one sample's clamped linear light
+///           (FragmentOutput::SampleLight).
 /// \endverbatim
 #pragma once
 
@@ -41,9 +43,21 @@ struct Shaders {
     std::string fragment;  ///< GLSL 3.30 core
 };
 
+/// What a program's fragment shader writes (its frag_color's rgb; alpha is 1).
+enum class FragmentOutput {
+    /// The pixel value of docs/spec.md §4: round(255 · clamp(I, 0, 1)^(1/γ)) / 255,
+    /// exact in an RGBA8 target. One sample per pixel.
+    Pixel,
+    /// One sample's L_k = clamp(I, 0, 1) (docs/spec.md §11): linear light,
+    /// neither gamma nor rounding, for a float target whose passes the host
+    /// averages (anti-aliasing). u_inv_gamma is not declared.
+    SampleLight,
+};
+
 /// The program drawing objects with this reflection × shading model under at
 /// most `light_capacity` (≥ 1) lights.
-Shaders generate(Reflection reflection, Shading shading, int light_capacity);
+Shaders generate(Reflection reflection, Shading shading, int light_capacity,
+                 FragmentOutput output = FragmentOutput::Pixel);
 
 /// The program drawing objects with this reflection × shading model under
 /// exactly these lights, as the OpenGL backend draws: shade() has one block
@@ -53,8 +67,8 @@ Shaders generate(Reflection reflection, Shading shading, int light_capacity);
 /// can change without a new program; their number and kinds cannot. Light
 /// values given here are not used. Likewise `gamma`: only whether it is 1
 /// matters; a program for gamma 1 leaves the power out (u_inv_gamma unused).
-Shaders generate(Reflection reflection, Shading shading, std::span<const Light> lights,
-                 float gamma);
+Shaders generate(Reflection reflection, Shading shading, std::span<const Light> lights, float gamma,
+                 FragmentOutput output = FragmentOutput::Pixel);
 
 /// What the OpenGL backend and the program of `litkit export --format cpp`
 /// draw with: the program specialised to the lights up to this many lights,
@@ -64,6 +78,6 @@ inline constexpr std::size_t max_specialised_lights = 16;
 /// generate(reflection, shading, lights, gamma) for up to
 /// max_specialised_lights lights, else the general program sized for them.
 Shaders generate_for_scene(Reflection reflection, Shading shading, std::span<const Light> lights,
-                           float gamma);
+                           float gamma, FragmentOutput output = FragmentOutput::Pixel);
 
 }  // namespace litkit::glsl

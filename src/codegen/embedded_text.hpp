@@ -6,6 +6,7 @@
 namespace litkit::detail {
 
 extern const char* const opengl_core_text;       // src/gl/opengl_core.inc
+extern const char* const opengl_samples_text;    // src/gl/opengl_samples.inc
 extern const char* const program_template_text;  // src/codegen/program.cpp.in
 
 }  // namespace litkit::detail

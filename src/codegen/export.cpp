@@ -19,6 +19,7 @@
 #include "core/files.hpp"
 #include "litkit/error.hpp"
 #include "litkit/glsl.hpp"
+#include "litkit/samples.hpp"
 #include "litkit/validate.hpp"
 #include "scene/float_range.hpp"
 #include "scene/transparency.hpp"
@@ -83,13 +84,20 @@ std::vector<Reflection> reflections_in_order(const ObjectModels& models) {
     return reflections;
 }
 
+// What the programs' fragments write: the pixel, or with several samples per
+// pixel one sample's light (the host resolves the passes, docs/spec.md §11).
+glsl::FragmentOutput fragment_output(const Scene& scene) {
+    return scene.output.samples > 1 ? glsl::FragmentOutput::SampleLight
+                                    : glsl::FragmentOutput::Pixel;
+}
+
 // A glass program (glsl_glass.hpp) for pair i, specialised to the scene's lights.
 glsl::Shaders glass_shaders(const ObjectModels& models, std::size_t i, const Scene& scene) {
     std::vector<Light> lights;
     for (const SceneLight& light : scene.lights) lights.push_back(light.light);
     const std::vector<Reflection> reflections = reflections_in_order(models);
-    return glsl::generate_glass(
-        {models.pairs[i].first, models.pairs[i].second, reflections, lights, scene.output.gamma});
+    return glsl::generate_glass({models.pairs[i].first, models.pairs[i].second, reflections, lights,
+                                 scene.output.gamma, fragment_output(scene)});
 }
 
 // A file stem as a C++ identifier: '-' becomes '_'.
@@ -237,9 +245,9 @@ std::string shaders_source(const ObjectModels& models, const Scene& scene) {
     for (std::size_t i = 0; i < models.pairs.size(); ++i) {
         const ModelPair& pair = models.pairs[i];
         const glsl::Shaders shaders =
-            models.glass[i]
-                ? glass_shaders(models, i, scene)
-                : glsl::generate_for_scene(pair.first, pair.second, lights, scene.output.gamma);
+            models.glass[i] ? glass_shaders(models, i, scene)
+                            : glsl::generate_for_scene(pair.first, pair.second, lights,
+                                                       scene.output.gamma, fragment_output(scene));
         const std::string id = identifier(program_stem(models, i));
         out += "// Program " + std::to_string(i) + ": reflection " +
                std::string(to_string(pair.first)) + ", shading " +
@@ -258,6 +266,67 @@ struct GeometrySource {
     std::uint64_t numbers = 0;           // in `arrays`
     std::vector<detail::GlObject> kept;  // every object's, where some object is glass
 };
+
+// The rows of the program's sample_pattern: the scene's samples per pixel.
+std::string samples_source(const Scene& scene) {
+    std::string out;
+    for (const SamplePosition& sample : sample_pattern(scene.output.samples)) {
+        out += "    {";
+        out += float_literal(sample.x);
+        out += ", ";
+        out += float_literal(sample.y);
+        out += "},\n";
+    }
+    return out;
+}
+
+// `--format glsl` with several samples per pixel: what the host does with
+// the programs' passes (docs/spec.md §11), for the fragment shader's
+// heading comment.
+std::string host_samples_comment(const Scene& scene) {
+    const int samples = scene.output.samples;
+    const Rgb8 bg = to_rgb8(scene.output.background);
+    std::string text = "//\n// Anti-aliasing: the scene has ";
+    text += std::to_string(samples);
+    text +=
+        " samples per pixel (litkit's docs/spec.md,\n"
+        "// section 11), and this program writes one sample's light, not the pixel. The\n"
+        "// host draws the frame once per sample k into an RGBA32F target cleared to\n"
+        "// (0, 0, 0, 0), with\n"
+        "//     u_view_projection = T_k * projection * view,\n"
+        "// T_k the translation by (2 * (0.5 - x_k) / W, 2 * (y_k - 0.5) / H, 0) for a\n"
+        "// picture of W x H pixels (here ";
+    text += std::to_string(scene.output.width) + " x " + std::to_string(scene.output.height);
+    text +=
+        "), (x_k, y_k) the sample's place in its\n"
+        "// pixel, from the pixel's top-left corner, y down:\n";
+    int k = 0;
+    for (const SamplePosition& sample : sample_pattern(samples)) {
+        text += "//     k = " + std::to_string(k++) + ": (";
+        text += glsl::float_literal(sample.x);
+        text += ", ";
+        text += glsl::float_literal(sample.y);
+        text += ")\n";
+    }
+    text +=
+        "// It reads each pass back as floats and, per pixel, adds the rgb of the passes\n"
+        "// whose alpha is 1, in the order of k (S), and counts those whose alpha is 0,\n"
+        "// which saw the background (n). The pixel is then\n"
+        "//     round(255 * ((S + n * B^gamma) / ";
+    text += std::to_string(samples);
+    text +=
+        ")^(1/gamma)), halves up,\n"
+        "// B the background colour / 255 and gamma as the scene has them (here\n"
+        "// [";
+    text += std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " + std::to_string(bg[2]);
+    text += "] / 255 and ";
+    text += glsl::float_literal(scene.output.gamma);
+    text +=
+        "). A pixel whose samples all saw the background is\n"
+        "// the background colour. `litkit export --format cpp` writes a program that\n"
+        "// does all of this.\n";
+    return text;
+}
 
 // 16777216 → "16,777,216".
 std::string grouped(std::uint64_t value) {
@@ -435,7 +504,6 @@ bool is_identifier(const std::string& name) {
 
 std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
                                   const ExportOptions& options) {
-    detail::refuse_samples(scene, "the GLSL export");
     ObjectModels models = object_models(scene, options);
     if (models.pairs.empty()) {  // no objects: the scene's own models, ready for some
         models.pairs.push_back({scene.reflection.value_or(options.fallback_reflection),
@@ -448,9 +516,12 @@ std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
         const ModelPair& pair = models.pairs[i];
         // Glass programs are specialised to the scene's lights and models,
         // as the C++ program's are (their rays reach every object).
-        glsl::Shaders shaders =
-            models.glass[i] ? glass_shaders(models, i, scene)
-                            : glsl::generate(pair.first, pair.second, light_capacity(scene));
+        glsl::Shaders shaders = models.glass[i]
+                                    ? glass_shaders(models, i, scene)
+                                    : glsl::generate(pair.first, pair.second, light_capacity(scene),
+                                                     fragment_output(scene));
+        if (scene.output.samples > 1)  // at the end of the comment that heads the shader
+            shaders.fragment.insert(shaders.fragment.find("\n\n") + 1, host_samples_comment(scene));
         const std::string stem = program_stem(models, i);
         files.push_back(directory / (stem + ".vert"));
         texts.push_back(std::move(shaders.vertex));
@@ -466,7 +537,6 @@ std::vector<fs::path> export_glsl(const Scene& scene, const fs::path& directory,
 std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
                                  const std::string& program_name, const std::string& scene_label,
                                  const ExportOptions& options) {
-    detail::refuse_samples(input, "the C++ export");
     // The program draws what the renderers draw: lengths brought into a
     // float's range by a power of two (scene/float_range.hpp; 1 for
     // ordinary scenes).
@@ -503,13 +573,14 @@ std::vector<fs::path> export_cpp(const Scene& input, const fs::path& directory,
     const Rgb8 bg = to_rgb8(scene.output.background);
     const std::string program = fill_template(
         detail::program_template_text,
-        {{"CORE", detail::opengl_core_text},
+        {{"CORE", std::string(detail::opengl_core_text) + "\n" + detail::opengl_samples_text},
          {"SHADERS", shaders_source(models, scene)},
          {"WIDTH", std::to_string(scene.output.width)},
          {"HEIGHT", std::to_string(scene.output.height)},
          {"BACKGROUND", "glm::vec3(" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " +
                             std::to_string(bg[2]) + ") / 255.0f"},
          {"GAMMA", float_literal(scene.output.gamma)},
+         {"SAMPLES", samples_source(scene)},
          {"EYE", vec3_literal(o.position)},
          {"LOOK_AT", vec3_literal(o.look_at)},
          {"UP", vec3_literal(o.up)},

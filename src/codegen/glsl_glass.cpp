@@ -454,8 +454,9 @@ Shaders generate_glass(const GlassProgram& program) {
         "// and u_node_count, u_room_ior, u_max_depth, u_min_distance (1e-6 x the room's\n"
         "// diagonal), u_background_light ((background/255)^gamma), u_object (the object's\n"
         "// number), u_face_base, u_depth_only (1: a depth pass that traces nothing).\n";
-    vertex = header(program.reflection, shading, "vertex") + note;
-    fragment = header(program.reflection, shading, "fragment") + note;
+    vertex = header(program.reflection, shading, "vertex", program.output) + note;
+    fragment = header(program.reflection, shading, "fragment", program.output) + note;
+    const bool pixel = program.output == FragmentOutput::Pixel;
 
     vertex +=
         "\n"
@@ -498,9 +499,10 @@ Shaders generate_glass(const GlassProgram& program) {
         "uniform int u_depth_only;  // 1: the depth pass before the traced one\n"
         "\n"
         "out vec4 frag_color;\n";
-    fragment += lighting_declarations(program.reflection, capacity, lights) +
-                glass_declarations(program.models, lights) + own_model +
-                to_pixel_function(lights && program.gamma == 1.0f);
+    fragment +=
+        lighting_declarations(program.reflection, capacity, lights) +
+        glass_declarations(program.models, lights) + own_model +
+        (pixel ? to_pixel_function(lights && program.gamma == 1.0f) : sample_light_function());
     fragment +=
         "\n"
         "// The local part (1 - t)*I_ad + I_s by the shading model, plus the traced\n"
@@ -533,7 +535,9 @@ Shaders generate_glass(const GlassProgram& program) {
         "    float t = object_transmission(u_object);\n"
         "    vec3 own = (1.0 - t) * ambient_diffuse + (all - ambient_diffuse);\n"
         "    vec3 d = unit_vector(p - u_eye);\n"
-        "    frag_color = vec4(to_pixel(own + trace_bracket(u_object, p, d, normal, face)), 1.0);\n"
+        "    frag_color = vec4(" +
+        std::string(pixel ? "to_pixel" : "sample_light") +
+        "(own + trace_bracket(u_object, p, d, normal, face)), 1.0);\n"
         "}\n";
     return shaders;
 }

@@ -31,7 +31,7 @@ int object_texels();
 
 // What a glass program is made for: its object's models, every reflection
 // model of the scene's objects (the rays reach any of them; `models[k]` is
-// model number k of u_objects), and the lights and gamma as for
+// model number k of u_objects), and the lights, gamma and output as for
 // generate_for_scene.
 struct GlassProgram {
     Reflection reflection = Reflection::Phong;
@@ -39,6 +39,8 @@ struct GlassProgram {
     std::span<const Reflection> models;
     std::span<const Light> lights;
     float gamma = 1.0f;
+    // The pixel, or one sample's light for anti-aliasing's passes.
+    FragmentOutput output = FragmentOutput::Pixel;
 };
 
 Shaders generate_glass(const GlassProgram& program);

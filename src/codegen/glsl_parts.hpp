@@ -8,12 +8,14 @@
 #include <string>
 #include <string_view>
 
+#include "litkit/glsl.hpp"
 #include "litkit/lighting.hpp"
 
 namespace litkit::glsl {
 
 // The comment at the top of every shader: what made it and its interface.
-std::string header(Reflection reflection, Shading shading, std::string_view stage);
+std::string header(Reflection reflection, Shading shading, std::string_view stage,
+                   FragmentOutput output);
 
 // The structs, uniforms and generated lighting functions of one reflection
 // model, ending with shade(p, normal, to_eye) for the material u_material.
@@ -27,5 +29,8 @@ std::string shade_text(std::optional<std::span<const Light>> lights);
 
 // to_pixel(I): the pixel value of docs/spec.md §4 over 255.
 std::string to_pixel_function(bool gamma_one);
+
+// sample_light(I): one sample's clamped linear light (docs/spec.md §11).
+std::string sample_light_function();
 
 }  // namespace litkit::glsl

@@ -31,6 +31,7 @@
 #include "codegen/gl_scene.hpp"
 #include "codegen/glsl_glass.hpp"
 #include "litkit/glsl.hpp"
+#include "litkit/samples.hpp"
 #include "litkit/validate.hpp"
 #include "scene/float_range.hpp"
 #include "scene/transparency.hpp"
@@ -40,6 +41,7 @@ namespace litkit {
 namespace {
 namespace core {
 #include "gl/opengl_core.inc"
+#include "gl/opengl_samples.inc"
 }  // namespace core
 
 // libepoxy loads libEGL, and libOpenGL or libGL, on first use and aborts the
@@ -127,10 +129,19 @@ struct GlRenderer::Impl {
     // updates of the materials) and on the GPU.
     detail::GlassData glass_data;
     std::vector<detail::GlObject> glass_objects;  // materials and models only
+    std::vector<Reflection> models;  // the objects' reflection models, each once (glass programs)
     std::optional<core::GlassBuffers> glass;
     core::FrameSettings frame{};
     std::size_t triangles = 0;
     std::vector<std::uint8_t> bands[2];  // read_rgb_in_step's band buffers, kept between frames
+    // Anti-aliasing (docs/spec.md §11), made on first use: each program's
+    // SampleLight twin, by the program's id, the passes' float target, the
+    // sums, and for draw_to the picture and what shows it.
+    std::map<GLuint, GLuint> sample_programs;
+    std::optional<core::OffscreenTarget> sample_target;
+    core::SampleSums sample_sums;
+    Image resolved;
+    std::optional<core::PictureBlit> blit;
 
     ~Impl() {
         if (context) {
@@ -141,9 +152,12 @@ struct GlRenderer::Impl {
             }
         }
         target.reset();
+        sample_target.reset();
+        blit.reset();
         glass.reset();
         for (core::GpuMesh& mesh : meshes) core::release_mesh(mesh);
         for (const auto& [key, program] : programs) glDeleteProgram(program);
+        for (const auto& [key, program] : sample_programs) glDeleteProgram(program);
     }
 };
 
@@ -174,7 +188,6 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options)
 
 void GlRenderer::update(const Scene& input) {
     check_renderable(input);  // litkit/validate.hpp: the renderers' preconditions
-    detail::refuse_samples(input, "the OpenGL backend");
     // Drawn as the CPU renderer draws it: lengths brought into a float's
     // range by a power of two (scene/float_range.hpp; 1 for ordinary scenes).
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));
@@ -232,7 +245,6 @@ GlRenderer::GlRenderer(const Scene& scene, RenderOptions options, CurrentContext
 GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext, bool headless)
     : impl_(std::make_unique<Impl>()) {
     check_renderable(input);  // before any OpenGL is set up
-    detail::refuse_samples(input, "the OpenGL backend");
     const Scene scene = scale_lengths(input, float_safe_length_scale(input));  // as in update
     Impl& gl = *impl_;
     if (headless) {
@@ -261,7 +273,7 @@ GlRenderer::GlRenderer(const Scene& input, RenderOptions options, CurrentContext
         // Glass (docs/spec.md §10): the programs of objects with t > 0 trace
         // rays that may meet any object, so they know every model.
         const bool glass = detail::has_glass(scene);
-        std::vector<Reflection> models;
+        std::vector<Reflection>& models = gl.models;
         for (const SceneObject& object : scene.objects) {
             const Reflection reflection = object.reflection.value_or(scene_reflection);
             if (std::find(models.begin(), models.end(), reflection) == models.end())
@@ -406,10 +418,52 @@ bool read_rgb_in_step(const core::OffscreenTarget& target, std::uint8_t* rgb,
     return true;
 }
 
+// The frame at the scene's samples per pixel (more than one) into `image`:
+// one pass per sample with the SampleLight programs, summed and resolved by
+// opengl_samples.inc's draw_samples.
+void draw_samples(GlRenderer::Impl& gl, Image& image) {
+    try {
+        if (gl.context) gl.context->make_current();
+        const int width = gl.target->width(), height = gl.target->height();
+        if (!gl.sample_target || gl.sample_target->width() != width ||
+            gl.sample_target->height() != height) {
+            gl.sample_target.reset();
+            gl.sample_target.emplace(width, height, GL_RGBA32F);
+        }
+        if (gl.sample_programs.size() != gl.programs.size()) {  // their models and lights
+            std::vector<Light> lights;
+            for (const SceneLight& light : gl.scene.lights) lights.push_back(light.light);
+            for (const auto& [key, program] : gl.programs) {
+                if (gl.sample_programs.count(program)) continue;  // linked before a failure
+                const auto& [reflection, shading, glass] = key;
+                const glsl::Shaders shaders =
+                    glass ? glsl::generate_glass({reflection, shading, gl.models, lights,
+                                                  gl.scene.output.gamma,
+                                                  glsl::FragmentOutput::SampleLight})
+                          : glsl::generate_for_scene(reflection, shading, lights,
+                                                     gl.scene.output.gamma,
+                                                     glsl::FragmentOutput::SampleLight);
+                gl.sample_programs[program] = core::link_program(shaders.vertex, shaders.fragment);
+            }
+        }
+        std::vector<core::DrawItem> items = gl.items;
+        for (core::DrawItem& item : items) item.program = gl.sample_programs.at(item.program);
+        std::vector<core::SamplePoint> pattern;
+        for (const SamplePosition& sample : sample_pattern(gl.scene.output.samples))
+            pattern.push_back({sample.x, sample.y});
+        if (image.width != width || image.height != height) image = Image(width, height);
+        core::draw_samples(*gl.sample_target, gl.frame, gl.lights, items, pattern, gl.sample_sums,
+                           image.rgb.data(), gl.glass ? &*gl.glass : nullptr);
+    } catch (const std::runtime_error& error) {
+        throw GlError(error.what());
+    }
+}
+
 }  // namespace
 
 void GlRenderer::render_into(Image& image) {
     Impl& gl = *impl_;
+    if (gl.scene.output.samples > 1) return draw_samples(gl, image);
     try {
         if (gl.context) gl.context->make_current();
         core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items,
@@ -434,19 +488,26 @@ void GlRenderer::render_into(Image& image) {
 
 void GlRenderer::draw_to(unsigned framebuffer) {
     Impl& gl = *impl_;
-    try {
-        if (gl.context) gl.context->make_current();
-        core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items,
-                         gl.glass ? &*gl.glass : nullptr);
-    } catch (const std::runtime_error& error) {
-        throw GlError(error.what());
+    if (gl.scene.output.samples > 1) {
+        // The resolved picture is in memory: shown through a texture.
+        draw_samples(gl, gl.resolved);
+        if (!gl.blit) gl.blit.emplace();
+        gl.blit->show(gl.resolved.rgb.data(), gl.resolved.width, gl.resolved.height, framebuffer);
+    } else {
+        try {
+            if (gl.context) gl.context->make_current();
+            core::draw_frame(*gl.target, gl.frame, gl.lights, gl.items,
+                             gl.glass ? &*gl.glass : nullptr);
+        } catch (const std::runtime_error& error) {
+            throw GlError(error.what());
+        }
+        // Both have OpenGL's bottom row first: a straight copy.
+        const int w = gl.target->width(), h = gl.target->height();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, gl.target->framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
-    // Both have OpenGL's bottom row first: a straight copy.
-    const int w = gl.target->width(), h = gl.target->height();
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl.target->framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     // draw_frame leaves depth testing and culling on; leave the context as
     // a window's drawing (a panel, say) expects it.
     glDisable(GL_DEPTH_TEST);

@@ -70,12 +70,4 @@ std::optional<std::size_t> first_transparent_object(const Scene& scene) {
     return std::nullopt;
 }
 
-void refuse_samples(const Scene& scene, std::string_view drawer) {
-    if (scene.output.samples == 1) return;
-    throw ArgumentError(std::string(drawer) +
-                        " does not draw anti-aliasing yet (docs/spec.md §11): output.samples is " +
-                        std::to_string(scene.output.samples) +
-                        "; the CPU backend does (--backend cpu), or set samples = 1");
-}
-
 }  // namespace litkit::detail

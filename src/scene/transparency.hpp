@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Objects that refract (docs/spec.md §10): the closed-mesh rule of §10.1 as
-// validation reports it, and the refusal of the drawers that cannot trace
-// rays (§10: a backend that cannot says so rather than draw something else).
+// validation reports it, and which object is the first to refract.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <string>
-#include <string_view>
 
 #include "litkit/mesh.hpp"
 #include "litkit/scene.hpp"
@@ -22,10 +20,5 @@ std::string closed_mesh_problem(const SceneObject& object, const Mesh& mesh);
 
 // The first object whose transmission is above 0, if any.
 std::optional<std::size_t> first_transparent_object(const Scene& scene);
-
-// Throws ArgumentError when the scene asks for more than one sample per
-// pixel (docs/spec.md §11), which `drawer` does not draw yet; the
-// message names the CPU backend, which does.
-void refuse_samples(const Scene& scene, std::string_view drawer);
 
 }  // namespace litkit::detail

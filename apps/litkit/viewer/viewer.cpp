@@ -196,12 +196,12 @@ int run_viewer(const ViewerOptions& options, litkit::Scene scene) {
             return glass && moving ? std::min(scene.max_depth, moving_depth) : scene.max_depth;
         };
         int drawn_depth = 0;  // max_depth of the picture shown
-        // Anti-aliasing (docs/spec.md §11) likewise: one sample while the view
-        // moves, the scene's at rest (the window is then `litkit render`'s
-        // picture). The OpenGL backend draws one sample.
+        // Anti-aliasing (docs/spec.md §11) likewise, on either backend: one
+        // sample while the view moves, the scene's at rest (the window is
+        // then `litkit render`'s picture).
         auto samples_now = [&] {
             const bool moving = dragged || turntable || options.benchmark_frames > 0;
-            return moving || options.backend == litkit::Backend::Gl ? 1 : scene.output.samples;
+            return moving ? 1 : scene.output.samples;
         };
         int drawn_samples = 0;  // samples of the picture shown
         // The scene the picture shows: the file's, the keys' models, the camera.
