@@ -28,7 +28,7 @@ set(LITKIT_LAYER_SOURCES_cpu
     cpu/shade_kernel_portable.cpp cpu/vertex.cpp)
 # codegen also compiles embedded_text.cpp, generated in the build tree.
 set(LITKIT_LAYER_SOURCES_codegen
-    codegen/export.cpp codegen/export_glass.cpp codegen/gl_glass.cpp codegen/gl_scene.cpp codegen/glsl.cpp
+    codegen/export.cpp codegen/export_glass.cpp codegen/export_samples.cpp codegen/gl_glass.cpp codegen/gl_scene.cpp codegen/glsl.cpp
     codegen/glsl_expr.cpp codegen/glsl_functions.cpp codegen/glsl_glass.cpp)
 set(LITKIT_LAYER_SOURCES_teach
     teach/compare.cpp teach/explain.cpp teach/explain_format.cpp teach/explain_tree.cpp
