@@ -9,7 +9,6 @@
 #include <string>
 
 #include "codegen/glsl_glass.hpp"
-#include "core/portable_math.hpp"
 #include "litkit/mesh.hpp"
 #include "scene/transparency.hpp"
 #include "trace/bvh_build.hpp"
@@ -119,12 +118,8 @@ void put_settings(GlassData& data, const Scene& scene) {
     const Room& room = scene.room;
     data.room_ior = room.ior;
     data.max_depth = scene.max_depth;
-    data.min_distance = 1e-6f * std::sqrt(room.width * room.width + room.height * room.height +
-                                          room.depth * room.depth);
-    const glm::vec3 background = scene.output.background;
-    const float gamma = scene.output.gamma;
-    data.background_light = {power(background.x, gamma), power(background.y, gamma),
-                             power(background.z, gamma)};
+    data.min_distance = secondary_min_distance(room);
+    data.background_light = background_light(scene.output);
 }
 
 }  // namespace

@@ -15,8 +15,8 @@
 #include <memory>
 
 #include "core/parallel.hpp"
-#include "core/portable_math.hpp"
 #include "cpu/pipeline.hpp"
+#include "scene/transparency.hpp"
 
 namespace litkit {
 
@@ -78,12 +78,8 @@ void Pipeline::prepare_tracer() {
     trace::TraceSettings settings;
     settings.room_ior = room.ior;
     settings.max_depth = scene.max_depth;
-    settings.min_distance = 1e-6f * std::sqrt(room.width * room.width + room.height * room.height +
-                                              room.depth * room.depth);
-    const glm::vec3 background = scene.output.background;
-    const float gamma = scene.output.gamma;
-    settings.background = {power(background.x, gamma), power(background.y, gamma),
-                           power(background.z, gamma)};
+    settings.min_distance = detail::secondary_min_distance(room);
+    settings.background = detail::background_light(scene.output);
     ray_tree = std::make_unique<trace::RayTree>(traced, lights, *accel, settings);
 }
 

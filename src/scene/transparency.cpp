@@ -3,8 +3,10 @@
 #include "scene/transparency.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <variant>
 
+#include "core/portable_math.hpp"
 #include "geometry/closed_mesh.hpp"
 #include "geometry/mesh_formats.hpp"
 
@@ -68,6 +70,17 @@ std::optional<std::size_t> first_transparent_object(const Scene& scene) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         if (scene.objects[i].material.transmission > 0.0f) return i;
     return std::nullopt;
+}
+
+float secondary_min_distance(const Room& room) {
+    return 1e-6f *
+           std::sqrt(room.width * room.width + room.height * room.height + room.depth * room.depth);
+}
+
+glm::vec3 background_light(const OutputSettings& output) {
+    const glm::vec3 background = output.background;
+    const float gamma = output.gamma;
+    return {power(background.x, gamma), power(background.y, gamma), power(background.z, gamma)};
 }
 
 }  // namespace litkit::detail
