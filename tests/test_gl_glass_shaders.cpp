@@ -306,9 +306,10 @@ TEST(GlGlassShaders, BendFallsBackToTheFaceNormal) {
 // The walk of the hierarchy in the texture buffers and the watertight test
 // find what the CPU tracer's hierarchy finds: front faces from the room,
 // an object's back faces from inside it, the same triangle and distance.
-TEST(GlGlassShaders, NearestHitIsTheCpuTracersOnTheGpu) {
+namespace {
+
+void expect_nearest_as_on_the_cpu(const Scene& scene) {
     context();
-    const Scene scene = glass_scenes::two_glasses_scene();
     std::vector<litkit::detail::GlObject> objects;
     for (const litkit::SceneObject& object : scene.objects)
         objects.push_back(litkit::detail::gl_object(object, litkit::Reflection::Phong,
@@ -390,4 +391,24 @@ TEST(GlGlassShaders, NearestHitIsTheCpuTracersOnTheGpu) {
     EXPECT_GT(cases - hits, cases / 20) << "and some miss";
     // Rays exactly through an edge may pick the neighbour (no double in GLSL).
     EXPECT_GE(same, cases - 2) << same << " of " << cases << " agree";
+}
+
+}  // namespace
+
+TEST(GlGlassShaders, NearestHitIsTheCpuTracersOnTheGpu) {
+    expect_nearest_as_on_the_cpu(glass_scenes::two_glasses_scene());
+}
+
+// One object of four triangles: the objects' root and the object's root
+// each hold a single child (a node's other slot empty), and the object's
+// tree is a single leaf.
+TEST(GlGlassShaders, NearestHitWithOneObjectOfOneLeaf) {
+    Scene scene = glass_scenes::base_scene();
+    const std::vector<glm::vec3> corners{{-1, -1, -1}, {1, -1, -1}, {0, 1, -1}, {0, 0, 1}};
+    scene.objects.push_back(
+        glass_scenes::glass(litkit::MeshDataShape(glass_scenes::convex_mesh(
+                                corners, {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}})),
+                            {0.1f, 0.0f, 0.5f}));
+    ASSERT_EQ(scene.objects.size(), 1u);
+    expect_nearest_as_on_the_cpu(scene);
 }

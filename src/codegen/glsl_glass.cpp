@@ -150,7 +150,7 @@ const char* const tracer_text = R"(
 // ---- The ray tree of docs/spec.md §10.2, traced against the scene's triangles ----
 
 uniform samplerBuffer u_triangles;  // 7 texels a triangle, in the hierarchy's leaf order
-uniform samplerBuffer u_nodes;      // 2 texels a node, depth first
+uniform samplerBuffer u_nodes;      // 4 texels a node: its children's boxes
 uniform samplerBuffer u_faces;      // N_g of each triangle, in drawing order
 uniform int u_node_count;
 uniform float u_room_ior;           // n_r
@@ -200,10 +200,10 @@ void intersect(vec3 origin, int kx, int ky, int kz, vec3 shear, int index, int i
     best = Hit(t, object, triangle, index, v / det, w / det);
 }
 
-// Where the ray enters node `node`'s box, if before `limit`; else NO_HIT.
-float box_entry(int node, vec3 origin, vec3 inv, float limit) {
-    vec3 s0 = (texelFetch(u_nodes, 2 * node).xyz - origin) * inv;
-    vec3 s1 = (texelFetch(u_nodes, 2 * node + 1).xyz - origin) * inv;
+// Where the ray enters the box lo..hi, if before `limit`; else NO_HIT.
+float box_entry(vec3 lo, vec3 hi, vec3 origin, vec3 inv, float limit) {
+    vec3 s0 = (lo - origin) * inv;
+    vec3 s1 = (hi - origin) * inv;
     vec3 near = min(s0, s1);
     vec3 far = max(s0, s1);
     float enter = max(max(near.x, near.y), max(near.z, 0.0));
@@ -211,9 +211,12 @@ float box_entry(int node, vec3 origin, vec3 inv, float limit) {
     return enter <= leave ? enter : NO_HIT;
 }
 
-// The nearest hit along origin + t*d (d unit), t > t_min: the hierarchy
-// walked nearer child first, a subtree skipped once its box lies beyond the
-// nearest hit so far.
+// The nearest hit along origin + t*d (d unit), t > t_min: the two-level
+// hierarchy walked from the objects' root (node 0) for a ray in the room,
+// from object `inside`'s root (node 1 + inside) for a ray inside it. Each
+// node holds its two children's boxes; a leaf's triangles are tested from
+// its parent, the nearer inner child is taken first, and a subtree is
+// skipped once its box lies beyond the nearest hit so far.
 Hit nearest(vec3 origin, vec3 d, int inside, float t_min) {
     Hit best = Hit(NO_HIT, -1, 0, 0, 0.0, 0.0);
     if (u_node_count == 0) return best;
@@ -230,38 +233,46 @@ Hit nearest(vec3 origin, vec3 d, int inside, float t_min) {
     // 1/d without infinities, so that no slab gives 0 * inf.
     vec3 inv = 1.0 / vec3(ad.x > 1e-30 ? d.x : 1e-30, ad.y > 1e-30 ? d.y : 1e-30,
                           ad.z > 1e-30 ? d.z : 1e-30);
-    if (box_entry(0, origin, inv, NO_HIT) == NO_HIT) return best;
     int stack[64];
     float entries[64];
     int sp = 0;
-    int node = 0;
+    int node = inside < 0 ? 0 : 1 + inside;
     while (true) {
-        int link = floatBitsToInt(texelFetch(u_nodes, 2 * node).w);
-        int count = floatBitsToInt(texelFetch(u_nodes, 2 * node + 1).w);
-        if (count == 0) {
-            float first = box_entry(node + 1, origin, inv, best.t);
-            float second = box_entry(link, origin, inv, best.t);
-            if (first < NO_HIT && second < NO_HIT) {
-                bool first_nearer = first <= second;
-                if (sp < 64) {
-                    stack[sp] = first_nearer ? link : node + 1;
-                    entries[sp] = first_nearer ? second : first;
-                    ++sp;
-                }
-                node = first_nearer ? node + 1 : link;
-                continue;
+        vec4 a_lo = texelFetch(u_nodes, 4 * node);
+        vec4 a_hi = texelFetch(u_nodes, 4 * node + 1);
+        vec4 b_lo = texelFetch(u_nodes, 4 * node + 2);
+        vec4 b_hi = texelFetch(u_nodes, 4 * node + 3);
+        int a = floatBitsToInt(a_lo.w), a_count = floatBitsToInt(a_hi.w);
+        int b = floatBitsToInt(b_lo.w), b_count = floatBitsToInt(b_hi.w);
+        float a_entry = a_count < 0 ? NO_HIT : box_entry(a_lo.xyz, a_hi.xyz, origin, inv, best.t);
+        float b_entry = b_count < 0 ? NO_HIT : box_entry(b_lo.xyz, b_hi.xyz, origin, inv, best.t);
+        // Sibling leaves hold neighbouring triangles: one loop tests either
+        // or both.
+        int first = a_count > 0 && a_entry < NO_HIT ? a : b;
+        int count = (a_count > 0 && a_entry < NO_HIT ? a_count : 0) +
+                    (b_count > 0 && b_entry < NO_HIT ? b_count : 0);
+        if (a_count > 0) a_entry = NO_HIT;
+        if (b_count > 0) b_entry = NO_HIT;
+        for (int i = 0; i < count; ++i)
+            intersect(origin, kx, ky, kz, shear, first + i, inside, t_min, best);
+        if (b_entry > best.t) b_entry = NO_HIT;  // beyond what a's leaf found
+        if (a_entry < NO_HIT && b_entry < NO_HIT) {
+            bool a_nearer = a_entry <= b_entry;
+            if (sp < 64) {
+                stack[sp] = a_nearer ? b : a;
+                entries[sp] = a_nearer ? b_entry : a_entry;
+                ++sp;
             }
-            if (first < NO_HIT) {
-                node = node + 1;
-                continue;
-            }
-            if (second < NO_HIT) {
-                node = link;
-                continue;
-            }
-        } else {
-            for (int i = 0; i < count; ++i)
-                intersect(origin, kx, ky, kz, shear, link + i, inside, t_min, best);
+            node = a_nearer ? a : b;
+            continue;
+        }
+        if (a_entry < NO_HIT) {
+            node = a;
+            continue;
+        }
+        if (b_entry < NO_HIT) {
+            node = b;
+            continue;
         }
         bool more = false;
         while (sp > 0 && !more) {
@@ -443,10 +454,10 @@ Shaders generate_glass(const GlassProgram& program) {
         "//   u_triangles  7 texels a triangle, in the hierarchy's leaf order: (p0, object),\n"
         "//                (p1, triangle within the object), (p2, 0), (N_g, 0), and the\n"
         "//                corners' vertex normals (n0, 0), (n1, 0), (n2, 0)\n"
-        "//   u_nodes      2 texels a node, depth first, an inner node's first child right\n"
-        "//                after it: (lower corner, bits of the second child or of the\n"
-        "//                first triangle), (upper corner, bits of the triangle count, 0\n"
-        "//                for an inner node)\n"
+        "//   u_nodes      4 texels a node, two for each child: (lower corner, bits of the\n"
+        "//                child's node or of its first triangle), (upper corner, bits of\n"
+        "//                its triangle count: 0 for a node, -1.0 for an empty slot);\n"
+        "//                node 0 is the root over the objects, node 1 + o object o's root\n"
         "//   u_objects    OBJECT_TEXELS a scene object: (C, k_a), (k_d, k_s, shininess, t),\n"
         "//                (absorption colour, D), (n_o, model, smooth, clear), then the\n"
         "//                models' parameters, four a texel\n"

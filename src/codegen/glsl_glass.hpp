@@ -18,15 +18,18 @@ namespace litkit::glsl {
 // - u_triangles, 7 texels a triangle, in the hierarchy's leaf order:
 //   (p0, object), (p1, triangle within the object), (p2, 0), (N_g, 0), then
 //   the corners' vertex normals (n0, 0), (n1, 0), (n2, 0);
-// - u_nodes, 2 texels a node, depth first (an inner node's first child
-//   follows it): (lower corner, bits of the second child or of the first
-//   triangle), (upper corner, bits of the triangle count, 0 for inner);
+// - u_nodes, 4 texels a node, two for each of its two children: (lower
+//   corner, bits of the child's node or of its first triangle), (upper
+//   corner, bits of its triangle count: 0 for a node, −1.0 for an empty
+//   slot). Node 0 is the root of the tree over the objects, node 1 + o the
+//   root of object o's tree over its own triangles (a two-level hierarchy,
+//   as src/trace/accel.cpp's);
 // - u_objects, object_texels() a scene object: (C, k_a), (k_d, k_s, α, t),
 //   (absorption colour, D), (n_o, model, smooth, clear), then the models'
 //   parameters (litkit::for_each_model_parameter's order), four a texel;
 // - u_faces, 1 texel a triangle in drawing order: (N_g, 0).
 inline constexpr int triangle_texels = 7;
-inline constexpr int node_texels = 2;
+inline constexpr int node_texels = 4;
 int object_texels();
 
 // What a glass program is made for: its object's models, every reflection
