@@ -207,6 +207,41 @@ TEST(Supersampling, ProbeGivesTheRenderedPixel) {
     }
 }
 
+// Probes in a row reuse the frame's vertex and setup stages; an update in
+// between (a moved object, another light, other samples) must not find them
+// stale: each probe equals a fresh renderer's render of the scene as it is.
+TEST(Supersampling, ProbesAfterAnUpdateSeeTheNewScene) {
+    Scene scene = default_scene();
+    scene.output.width = 80;
+    scene.output.height = 60;
+    Renderer renderer(scene);
+    const auto expect_probes_are_the_render = [&](const Scene& now, const char* what) {
+        const Image image = Renderer(now).render();
+        int differing = 0;
+        for (int x = 0; x < 80; x += 3) {
+            const std::uint8_t* want = image.pixel(x, 30);
+            const PixelProbe probe = renderer.probe(x, 30);
+            differing += probe.rgb != Rgb8{want[0], want[1], want[2]};
+        }
+        EXPECT_EQ(differing, 0) << what;
+    };
+    expect_probes_are_the_render(scene, "as built");
+    scene.objects[0].position.x += 0.4f;  // the meshes are built again
+    renderer.update(scene);
+    expect_probes_are_the_render(scene, "object moved");
+    scene.objects[0].rotation_degrees.y += 25.0f;
+    scene.lights[0].light.intensity *= 0.5f;  // and the surfaces
+    renderer.update(scene);
+    expect_probes_are_the_render(scene, "object turned, light dimmed");
+    scene.observer.position.x -= 0.7f;  // only the view: the meshes are kept
+    renderer.update(scene);
+    EXPECT_EQ(renderer.mesh_builds(), 3u);
+    expect_probes_are_the_render(scene, "observer moved");
+    scene.output.samples = 4;
+    renderer.update(scene);
+    expect_probes_are_the_render(scene, "four samples");
+}
+
 // A pixel whose samples all see one flat-shaded face is that face's colour,
 // as with one sample: the mean of equal values.
 TEST(Supersampling, PixelsInsideOneFlatFaceKeepTheirColour) {

@@ -207,6 +207,10 @@ struct Pipeline {
     int band_count = 0;
     // Set while Renderer::probe draws: the pixel to record, and the record.
     int probe_x = -1, probe_y = -1;
+    // The samples per pixel of the frame whose vertex and setup stages the
+    // buffers above still hold (0: none, or the scene has changed since), so
+    // that probe() after probe() draws only the pixel's band.
+    int stages_hold_samples = 0;
     mutable PixelProbe probed;
 
     // The tracer, only while some object has t > 0 (docs/spec.md §10): the

@@ -17,6 +17,7 @@ namespace litkit {
 
 // Everything of the scene but its meshes: lights, materials and models.
 void Pipeline::prepare_surfaces() {
+    stages_hold_samples = 0;  // the lights, colours or meshes may differ
     lights.clear();
     for (const SceneLight& light : scene.lights)
         lights.push_back(equations::prepare_light(light.light));

@@ -127,12 +127,20 @@ void Renderer::render_into(Image& image) {
     const int height = impl.scene.output.height;
     if (image.width != width || image.height != height) image = Image(width, height);
     impl.begin_frame(width, height);
-    // vertex: every vertex to clip space and window coordinates.
-    impl.vertex_stage(width, height);
-    // clip and setup, one chunk of triangles per job, binned to bands of rows.
-    impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int worker) {
-        impl.setup(impl.chunks[c], impl.scratch[static_cast<std::size_t>(worker)], width, height);
-    });
+    // A probe after a probe of the same scene finds the vertex and setup
+    // stages' buffers as they were left (nothing but update() changes them).
+    const int samples = impl.scene.output.samples;
+    if (impl.probe_y < 0 || impl.stages_hold_samples != samples) {
+        impl.stages_hold_samples = 0;  // until both stages are done
+        // vertex: every vertex to clip space and window coordinates.
+        impl.vertex_stage(width, height);
+        // clip and setup, one chunk of triangles per job, binned to bands of rows.
+        impl.pool.parallel_for(impl.chunks.size(), [&](std::size_t c, int worker) {
+            impl.setup(impl.chunks[c], impl.scratch[static_cast<std::size_t>(worker)], width,
+                       height);
+        });
+        impl.stages_hold_samples = samples;
+    }
     // rasterize and fragment, one band of rows per job.
     auto draw_band = [&](int band, BandScratch& scratch) {
         if (impl.scene.output.samples > 1) {
