@@ -51,14 +51,8 @@ long huge_kilobytes_at(const void* address) {
     return -1;
 }
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(LITKIT_SANITIZED)  // tests/CMakeLists.txt
 constexpr bool sanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool sanitized = true;
-#else
-constexpr bool sanitized = false;
-#endif
 #else
 constexpr bool sanitized = false;
 #endif

@@ -763,7 +763,7 @@ TEST_F(Reliability, EightToriAtTheMaximumTessellationAreRefusedBeforeAnythingIsB
     for (const char* command : {"check tori.toml", "render tori.toml -o tori.png"}) {
         // Memory limited to 1 GiB: building anything would fail. (Not under
         // ASan, which reserves more address space than that to start.)
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(LITKIT_SANITIZED)
         const std::string limit;
 #else
         const std::string limit = "ulimit -v 1048576 && ";
@@ -789,7 +789,7 @@ TEST_F(Reliability, MaxTrianglesSetsTheBudget) {
 }
 
 TEST_F(Reliability, RunningOutOfMemorySaysWhatWasBeingBuilt) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(LITKIT_SANITIZED)
     GTEST_SKIP() << "ASan reserves more address space than ulimit -v allows";
 #else
     write("tori.toml", eight_tori());

@@ -267,7 +267,7 @@ TEST(Accel, RaisesNoInvalidOperationOrDivisionByZero) {
 // Random rays in all, three quarters from anywhere and a quarter from
 // inside objects: fewer where the reference is slow (the sanitizers' build
 // compiles the tests at -O0, as does a Debug build).
-#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
+#if defined(LITKIT_SANITIZED) || !defined(__OPTIMIZE__)
 constexpr int random_rays = 20'000;
 #else
 constexpr int random_rays = 1'000'000;
