@@ -540,6 +540,17 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         {"v 0 0 1e999",
          "mesh.obj:3:7: error: cannot read '" + std::string("mesh.obj") +
              "': vertex z coordinate '1e999' is beyond the range of numbers litkit reads"},
+        // Skin weights (tinyobjloader's "vw"), whose joints it makes ints
+        // unchecked: fuzz_obj found "vw 1 1e9990" (docs/reliability.md).
+        {"vw 1 1e9990 0.5", "mesh.obj:3:6: error: cannot read '" + std::string("mesh.obj") +
+                                "': vertex weight's joint '1e9990' is not a joint number (0 to "
+                                "2147483647)"},
+        {"vw 1 3e9 0.5", "mesh.obj:3:6: error: cannot read '" + std::string("mesh.obj") +
+                             "': vertex weight's joint '3e9' is not a joint number (0 to "
+                             "2147483647)"},
+        {"vw 1.5 2 0.5", "mesh.obj:3:4: error: cannot read '" + std::string("mesh.obj") +
+                             "': vertex weight's vertex '1.5' is not a vertex number (0 to "
+                             "2147483647)"},
     };
     for (const auto& [line, expected] : cases) {
         write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + line + "\nf 1 2 3\n");

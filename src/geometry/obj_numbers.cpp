@@ -126,6 +126,24 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
         } else if (keyword == "vt") {
             check_coordinates("texture coordinate", 1, 3);
             ++seen.texture_coordinates;
+        } else if (keyword == "vw") {
+            // tinyobjloader's skin weights, "vw v j0 w0 j1 w1 ...": litkit
+            // uses none, but the parser turns each joint j into an int
+            // unchecked (undefined beyond an int's range; found by fuzz_obj).
+            long long vertex = 0;
+            if (words.size() < 2)
+                fail(words[0].column + 2, "vertex weight needs a vertex number, found none");
+            if (!read_integer(words[1].text, vertex) || vertex < 0 || vertex > 2147483647)
+                fail(words[1].column, "vertex weight's vertex '" + std::string(words[1].text) +
+                                          "' is not a vertex number (0 to 2147483647)");
+            for (std::size_t i = 2; i < words.size(); i += 2) {
+                double joint = 0;
+                bool out_of_range = false;
+                if (!read_number(words[i].text, joint, out_of_range) ||
+                    !(joint >= 0.0 && joint <= 2147483647.0))
+                    fail(words[i].column, "vertex weight's joint '" + std::string(words[i].text) +
+                                              "' is not a joint number (0 to 2147483647)");
+            }
         } else if (keyword == "f") {
             if (words.size() >= 4) ++face_number;
             for (std::size_t i = 1; i < words.size(); ++i) {
