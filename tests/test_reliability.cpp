@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -24,6 +25,8 @@
 #include "core/files.hpp"
 #include "litkit/error.hpp"
 #include "litkit/image.hpp"
+#include "litkit/mesh.hpp"
+#include "litkit/shapes.hpp"
 #include "run_command.hpp"
 
 namespace fs = std::filesystem;
@@ -551,6 +554,21 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         {"vw 1.5 2 0.5", "mesh.obj:3:4: error: cannot read '" + std::string("mesh.obj") +
                              "': vertex weight's vertex '1.5' is not a vertex number (0 to "
                              "2147483647)"},
+        // tinyobjloader's number reader overflows an int on an exponent of
+        // 2147483648 or 2147483649 (fuzz_obj found "12e214748364838"), in
+        // every line it reads reals from: weights and tags too.
+        {"vw 1 2 12e2147483648", "mesh.obj:3:8: error: cannot read '" + std::string("mesh.obj") +
+                                     "': vertex weight's weight '12e2147483648' is beyond the "
+                                     "range of numbers litkit reads"},
+        {"t name 0/1/0 -.E+0002147483649",
+         "mesh.obj:3:14: error: cannot read '" + std::string("mesh.obj") +
+             "': tag value '-.E+0002147483649' is beyond the range of numbers litkit reads"},
+        // A lone carriage return ends a line, for tinyobjloader and so for
+        // litkit: the vertex is line 4.
+        {"s 1\rv 0 0 12e214748364838",
+         "mesh.obj:4:7: error: cannot read '" + std::string("mesh.obj") +
+             "': vertex z coordinate '12e214748364838' is beyond the range of numbers litkit "
+             "reads"},
     };
     for (const auto& [line, expected] : cases) {
         write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + line + "\nf 1 2 3\n");
@@ -559,6 +577,40 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         // The mesh file's path is resolved against the scene's folder.
         EXPECT_EQ(run.output, expected + after) << line;
     }
+    // The same lines one digit short of the overflow are read (a weight or
+    // a tag's real of 1e2147483647 is infinite, and litkit uses neither).
+    for (const char* line : {"vw 1 2 12e2147483647", "t name 0/1/0 -.E+0002147483647"}) {
+        write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + std::string(line) + "\nv 0 1 0\nf 1 2 3\n");
+        CommandRun run = cli("check mesh.toml");
+        EXPECT_EQ(run.status, 0) << line << run.output;
+    }
+}
+
+TEST_F(Reliability, ObjLinesEndWhereTinyobjloaderEndsThem) {
+    write("mesh.toml",
+          std::string(small_scene) +
+              "[[objects]]\ntype = \"mesh\"\nfile = \"mesh.obj\"\nposition = [3, 0, 0]\n");
+    // An old Mac file (lone carriage returns) is read line by line: before,
+    // litkit's check saw one line and called its "f" a vertex coordinate.
+    write("mesh.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+    CommandRun good = cli("check mesh.toml");
+    EXPECT_EQ(good.status, 0) << good.output;
+    const litkit::Mesh mesh = litkit::load_obj(dir / "mesh.obj");
+    EXPECT_EQ(mesh.positions.size(), 3u);
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0], (std::array<std::uint32_t, 3>{0, 1, 2}));
+    // Errors count lines the same way, in litkit's check and in the face
+    // lookup that places tinyobjloader's own complaints.
+    write("mesh.obj", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\n\rf 1 2 9\r");
+    CommandRun bad = cli("check mesh.toml");
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_EQ(bad.output,
+              "mesh.obj:5:7: error: cannot read 'mesh.obj': face 1 refers to vertex 9, "
+              "but the file defines 3 vertices (objects[1].file at mesh.toml:28:8)\n");
+    write("mesh.obj", "v 0 0 0\rv 1 0 0\r\rv 0 1 0\rf 1 2 3\rf 1 2\rf 3 2 1\r");
+    EXPECT_EQ(litkit::line_of_face(dir / "mesh.obj", 0), 5u);
+    EXPECT_EQ(litkit::line_of_face(dir / "mesh.obj", 1), 7u);
+    EXPECT_EQ(litkit::line_of_face(dir / "mesh.obj", 2), 0u);
 }
 
 TEST_F(Reliability, FaceIndicesOutOfRangeAreLocatedErrors) {

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <sstream>
@@ -51,11 +50,18 @@ std::string trimmed(std::string text) {
 // tinyobjloader lists them: `f` lines with at least 3 corners), or 0 if the
 // file cannot be read again. Only needed to place an error.
 std::uint32_t line_of_face(const std::filesystem::path& path, std::size_t face_number) {
-    std::ifstream file(path);
     std::string text;
+    try {
+        text = read_file_limited(path);
+    } catch (const Error&) {
+        return 0;
+    }
     std::size_t faces_seen = 0;
-    for (std::uint32_t line = 1; std::getline(file, text); ++line) {
-        std::istringstream words(text);
+    std::uint32_t line = 0;
+    for (std::size_t at = 0; at < text.size();) {
+        // Lines as tinyobjloader splits them (a lone "\r" ends one too).
+        std::istringstream words{std::string(detail::next_obj_line(text, at))};
+        ++line;
         std::string keyword;
         if (!(words >> keyword) || keyword != "f") continue;
         std::size_t corners = 0;

@@ -47,6 +47,33 @@ bool read_integer(std::string_view word, long long& value) {
     return error == std::errc() && end == word.data() + word.size();
 }
 
+// Whether tinyobjloader's number reader (tryParseDouble) would overflow an
+// int on `word`'s exponent: its guard lets 214748364 · 10 + 8 and + 9
+// through, undefined behaviour (found by fuzz_obj). Its grammar, followed
+// as it reads: [sign] (digits [. digits] | . digits) e [sign] digits.
+bool exponent_overflows_reader(std::string_view word) {
+    const auto digit = [&](std::size_t i) {
+        return i < word.size() && word[i] >= '0' && word[i] <= '9';
+    };
+    std::size_t i = 0;
+    if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+    if (!(i < word.size() && word[i] == '.')) {
+        const std::size_t start = i;
+        while (digit(i)) ++i;
+        if (i == start) return false;
+    }
+    if (i < word.size() && word[i] == '.')
+        for (++i; digit(i); ++i) {
+        }
+    if (!(i < word.size() && (word[i] == 'e' || word[i] == 'E'))) return false;
+    ++i;
+    if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+    while (i < word.size() && word[i] == '0') ++i;
+    const std::string_view exponent = word.substr(i);
+    return exponent.size() >= 10 && exponent.starts_with("214748364") && digit(i + 9) &&
+           word[i + 9] >= '8';
+}
+
 struct Counts {
     long long vertices = 0;
     long long texture_coordinates = 0;
@@ -60,9 +87,7 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
     // ones count back from the last vertex read so far.
     Counts total;
     for (std::size_t at = 0; at < text.size();) {
-        std::size_t end = text.find('\n', at);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view line = text.substr(at, end - at);
+        const std::string_view line = next_obj_line(text, at);
         std::size_t first = line.find_first_not_of(" \t");
         if (first != std::string_view::npos) {
             const std::string_view rest = line.substr(first);
@@ -70,17 +95,13 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
             if (rest.starts_with("vt ") || rest.starts_with("vt\t")) ++total.texture_coordinates;
             if (rest.starts_with("vn ") || rest.starts_with("vn\t")) ++total.normals;
         }
-        at = end + 1;
     }
 
     Counts seen;
     std::uint32_t line_number = 0;
     std::size_t face_number = 0;
     for (std::size_t at = 0; at < text.size();) {
-        std::size_t end = text.find('\n', at);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view line = text.substr(at, end - at);
-        at = end + 1;
+        const std::string_view line = next_obj_line(text, at);
         ++line_number;
         const std::vector<Word> words = words_of(line);
         if (words.empty()) continue;
@@ -143,7 +164,18 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                     !(joint >= 0.0 && joint <= 2147483647.0))
                     fail(words[i].column, "vertex weight's joint '" + std::string(words[i].text) +
                                               "' is not a joint number (0 to 2147483647)");
+                if (i + 1 < words.size() && exponent_overflows_reader(words[i + 1].text))
+                    fail(words[i + 1].column, "vertex weight's weight '" +
+                                                  std::string(words[i + 1].text) +
+                                                  "' is beyond the range of numbers litkit reads");
             }
+        } else if (keyword == "t") {
+            // Tags (name, counts, then integers, reals and strings): litkit
+            // uses none, but the parser reads their reals too.
+            for (std::size_t i = 1; i < words.size(); ++i)
+                if (exponent_overflows_reader(words[i].text))
+                    fail(words[i].column, "tag value '" + std::string(words[i].text) +
+                                              "' is beyond the range of numbers litkit reads");
         } else if (keyword == "f") {
             if (words.size() >= 4) ++face_number;
             for (std::size_t i = 1; i < words.size(); ++i) {
@@ -184,6 +216,14 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
             }
         }
     }
+}
+
+std::string_view next_obj_line(std::string_view text, std::size_t& at) {
+    const std::size_t start = at;
+    std::size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string_view::npos) end = text.size();
+    at = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
+    return text.substr(start, end - start);
 }
 
 }  // namespace litkit::detail

@@ -4,6 +4,7 @@
 // and says nothing, and only warns about a face index out of range.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -14,5 +15,10 @@ namespace litkit::detail {
 // the first face index that is not an integer or refers to no vertex
 // (texture coordinate, normal) of the file.
 void check_obj_numbers(std::string_view text, const std::string& name);
+
+// The line of `text` that starts at `at`, split as tinyobjloader splits
+// lines (at "\n", "\r" or "\r\n"; an old Mac file's lone "\r" ends a line
+// too); `at` moves past its end.
+std::string_view next_obj_line(std::string_view text, std::size_t& at);
 
 }  // namespace litkit::detail
