@@ -324,6 +324,41 @@ TEST(Accel, MatchesBruteForceInsideObjects) {
     }
 }
 
+// An object of 18,432 triangles, whose hierarchy is collapsed in parts on
+// the lent threads (accel.cpp: from 16,384 triangles), beside a small one:
+// rays from outside and from inside, built on one thread and on lent
+// "threads" that run their jobs in reverse.
+TEST(Accel, MatchesBruteForceOnAnObjectCollapsedInParts) {
+    const Owned big = placed(litkit::make_sphere(1.0f, 128, 72), {0.0f, 0.0f, 0.0f});
+    ASSERT_GE(big.triangles.size(), 16384u);
+    const Owned small = placed(litkit::make_cube(0.5f), {0.0f, 0.0f, 2.0f});
+    const std::vector<MeshView> objects{small.view(), big.view()};
+    const litkit::ParallelFor reversed = [](std::size_t count, const litkit::ParallelJob& job) {
+        for (std::size_t i = count; i-- > 0;) job(i);
+    };
+    const Accel accel(objects), lent(objects, reversed);
+    std::mt19937 random(12);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    const int rays = random_rays / 250;
+    int hits = 0;
+    for (int i = 0; i < rays; ++i) {
+        const glm::vec3 target(0.9f * unit(random), 0.9f * unit(random), 0.9f * unit(random));
+        const Ray outside{{3.0f * unit(random), 3.0f * unit(random), 3.0f}, {}};
+        const Ray from{outside.origin, target - outside.origin};
+        const Hit want = reference(objects, from, true);
+        hits += want.object == 1;
+        expect_same(accel.nearest_front(from), want, from);
+        expect_same(lent.nearest_front(from), want, from);
+        const Ray inside{0.5f * target, {unit(random), unit(random), unit(random)}};
+        const Hit out = reference(objects, inside, false, 1);
+        ASSERT_TRUE(out.found());
+        expect_same(accel.nearest_back(inside, 1), out, inside);
+        expect_same(lent.nearest_back(inside, 1), out, inside);
+        if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(hits, rays / 2);
+}
+
 // Rays through exactly a vertex or an edge's midpoint of a closed mesh,
 // from inside it (back faces) and from outside where every triangle at that
 // point faces the origin (front faces): at least one is hit, as brute force.

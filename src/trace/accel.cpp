@@ -25,6 +25,7 @@
 // double, go to the scalar test itself).
 #include "trace/accel.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -152,13 +153,11 @@ struct Accel::Impl {
     std::vector<std::uint32_t> roots;  // per object: its root (a child), or empty
     std::uint32_t top = empty;
 
-    // Collapses binary node `at` of `tree` (see the top of the file); a
-    // binary leaf becomes leaf(node).
-    template <class Leaf>
-    std::uint32_t collapse(const build::Tree& tree, std::uint32_t at, const Leaf& leaf) {
-        const build::Node& node = tree.nodes[at];
-        if (node.count > 0) return leaf(node);
-        std::uint32_t open[4] = {node.a, node.b};
+    // The children binary node `node` opens into (see the top of the file):
+    // the child of largest area opened until there are four or only leaves.
+    static int open_children(const build::Tree& tree, const build::Node& node,
+                             std::uint32_t open[4]) {
+        open[0] = node.a, open[1] = node.b;
         int size = 2;
         while (size < 4) {
             int widest = -1;
@@ -175,28 +174,130 @@ struct Accel::Impl {
             const build::Node& c = tree.nodes[open[widest]];
             open[widest] = c.a, open[size++] = c.b;
         }
-        const auto index = static_cast<std::uint32_t>(nodes.size());
-        nodes.emplace_back();
-        Node4 out{};
+        return size;
+    }
+
+    // A node of the children `open` (their boxes padded), children to be
+    // filled in; lanes past `size` are empty.
+    static Node4 node_of(const build::Tree& tree, const std::uint32_t open[4], int size) {
+        Node4 out;
         for (int i = 0; i < 4; ++i) {
-            if (i >= size) {
-                out.child[i] = empty;
-                for (int a = 0; a < 3; ++a)
-                    out.box[2 * a][i] = std::numeric_limits<float>::infinity(),
-                                out.box[2 * a + 1][i] = -std::numeric_limits<float>::infinity();
-                continue;
-            }
-            const build::Box box = padded(tree.nodes[open[i]].box);
+            out.child[i] = empty;
+            build::Box box;  // empty: lo = ∞, hi = −∞
+            if (i < size) box = padded(tree.nodes[open[i]].box);
             for (int a = 0; a < 3; ++a)
                 out.box[2 * a][i] = box.lo[a], out.box[2 * a + 1][i] = box.hi[a];
-            out.child[i] = collapse(tree, open[i], leaf);
         }
+        return out;
+    }
+
+    // Collapses binary node `at` of `tree` into `nodes`; a binary leaf
+    // becomes leaf(node). (The hierarchy over the objects.)
+    template <class Leaf>
+    std::uint32_t collapse(const build::Tree& tree, std::uint32_t at, const Leaf& leaf) {
+        const build::Node& node = tree.nodes[at];
+        if (node.count > 0) return leaf(node);
+        std::uint32_t open[4];
+        const int size = open_children(tree, node, open);
+        const auto index = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        Node4 out = node_of(tree, open, size);
+        for (int i = 0; i < size; ++i) out.child[i] = collapse(tree, open[i], leaf);
         nodes[index] = out;
         return index;
     }
 
-    std::uint32_t add_block(const MeshView& mesh, std::uint32_t object,
-                            std::span<const std::uint32_t> triangles) {
+    // Where a collapse writes next in `nodes` and `blocks`.
+    struct Cursor {
+        std::uint32_t node = 0, block = 0;
+    };
+    // A child that stands for binary node holes[h] until that is collapsed.
+    static constexpr std::uint32_t hole_bit = 0x40000000u;
+
+    // How many nodes and blocks collapsing binary node `at` makes, down to
+    // `cut` levels of four-wide nodes (an inner node there is appended to
+    // `holes` instead; a negative `cut`: all levels).
+    static Cursor count(const build::Tree& tree, std::uint32_t at, int cut,
+                        std::vector<std::uint32_t>* holes) {
+        const build::Node& node = tree.nodes[at];
+        if (node.count > 0) return {0, 1};
+        if (cut == 0) {
+            holes->push_back(at);
+            return {};
+        }
+        std::uint32_t open[4];
+        const int size = open_children(tree, node, open);
+        Cursor sum{1, 0};
+        for (int i = 0; i < size; ++i) {
+            const Cursor c = count(tree, open[i], cut - 1, holes);
+            sum.node += c.node, sum.block += c.block;
+        }
+        return sum;
+    }
+
+    // Collapses binary node `at` (object `object`'s tree) into the nodes
+    // and blocks at `at_`, in the order count() counts them, and returns it;
+    // down to `cut` levels, where the h-th inner node becomes hole_bit | h.
+    std::uint32_t fill(const build::Tree& tree, std::uint32_t at, const MeshView& mesh,
+                       std::uint32_t object, int cut, Cursor& next, std::uint32_t& holes) {
+        const build::Node& node = tree.nodes[at];
+        if (node.count > 0) {
+            blocks[next.block] =
+                block_of(mesh, object, std::span(tree.order).subspan(node.a, node.count));
+            return leaf_bit | next.block++;
+        }
+        if (cut == 0) return hole_bit | holes++;
+        std::uint32_t open[4];
+        const int size = open_children(tree, node, open);
+        const std::uint32_t index = next.node++;
+        Node4 out = node_of(tree, open, size);
+        for (int i = 0; i < size; ++i)
+            out.child[i] = fill(tree, open[i], mesh, object, cut - 1, next, holes);
+        nodes[index] = out;
+        return index;
+    }
+
+    // Collapses object `object`'s binary tree and returns its root. A large
+    // object's collapse (a tenth of its build) runs on the lent threads:
+    // the top three levels, then each subtree below them, counted first so
+    // that each is written in place.
+    std::uint32_t collapse_object(const build::Tree& tree, const MeshView& mesh,
+                                  std::uint32_t object, const ParallelFor& parallel) {
+        constexpr std::size_t parted = 16384;  // triangles; fewer are collapsed at once
+        const int cut = tree.order.size() < parted ? -1 : 3;
+        std::vector<std::uint32_t> holes;
+        const Cursor top = count(tree, 0, cut, &holes);
+        std::vector<Cursor> starts(holes.size());
+        run_parallel(parallel, holes.size(),
+                     [&](std::size_t h) { starts[h] = count(tree, holes[h], -1, nullptr); });
+        Cursor end{static_cast<std::uint32_t>(nodes.size()) + top.node,
+                   static_cast<std::uint32_t>(blocks.size()) + top.block};
+        for (Cursor& start : starts) {
+            const Cursor size = start;
+            start = end;
+            end.node += size.node, end.block += size.block;
+        }
+        Cursor next{static_cast<std::uint32_t>(nodes.size()),
+                    static_cast<std::uint32_t>(blocks.size())};
+        nodes.resize(end.node), blocks.resize(end.block);
+        std::uint32_t hole = 0;
+        const std::uint32_t root = fill(tree, 0, mesh, object, cut, next, hole);
+        std::vector<std::uint32_t> roots(holes.size());
+        run_parallel(parallel, holes.size(), [&](std::size_t h) {
+            std::uint32_t none = 0;
+            roots[h] = fill(tree, holes[h], mesh, object, -1, starts[h], none);
+        });
+        // The top's children that stand for holes (a hole is never the root,
+        // and the top's nodes are fewer than hole_bit).
+        for (std::uint32_t i = next.node - top.node; i < next.node; ++i)
+            for (std::uint32_t& child : nodes[i].child)
+                if (child != empty && !(child & leaf_bit) && (child & hole_bit))
+                    child = roots[child & ~hole_bit];
+        return root;
+    }
+
+    static Block block_of(const MeshView& mesh, std::uint32_t object,
+                          std::span<const std::uint32_t> triangles) {
         Block block{};
         block.object = object;
         block.count = static_cast<std::uint32_t>(triangles.size());
@@ -206,8 +307,7 @@ struct Accel::Impl {
             for (int v = 0; v < 3; ++v)
                 for (int a = 0; a < 3; ++a) block.corner[3 * v + a][l] = mesh.positions[tri[v]][a];
         }
-        blocks.push_back(block);
-        return leaf_bit | static_cast<std::uint32_t>(blocks.size() - 1);
+        return block;
     }
 
     void prefetch(std::uint32_t child) const {
@@ -389,22 +489,15 @@ Accel::Accel(std::span<const MeshView> objects, const ParallelFor& parallel)
         if (mesh.triangles.empty()) continue;
         std::vector<build::Box> boxes(mesh.triangles.size());
         parallel_chunks(parallel, boxes.size(), 4096, [&](std::size_t i) {
-            build::Box& box = boxes[i];
-            for (const std::uint32_t v : mesh.triangles[i])
-                for (int a = 0; a < 3; ++a) {
-                    box.lo[a] = std::min(box.lo[a], mesh.positions[v][a]);
-                    box.hi[a] = std::max(box.hi[a], mesh.positions[v][a]);
-                }
+            const auto& [i0, i1, i2] = mesh.triangles[i];
+            const glm::vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1],
+                            &p2 = mesh.positions[i2];
+            const glm::vec3 lo = glm::min(glm::min(p0, p1), p2),
+                            hi = glm::max(glm::max(p0, p1), p2);
+            boxes[i] = build::Box{{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}};
         });
         const build::Tree tree = build::build_tree(boxes, 4, parallel);
-        // A binary tree of L leaves has L − 1 inner nodes, and each node of
-        // four replaces at least one of them.
-        const std::size_t leaves = (tree.nodes.size() + 1) / 2;
-        m.blocks.reserve(m.blocks.size() + leaves);
-        m.nodes.reserve(m.nodes.size() + leaves);
-        m.roots[o] = m.collapse(tree, 0, [&](const build::Node& leaf) {
-            return m.add_block(mesh, o, std::span(tree.order).subspan(leaf.a, leaf.count));
-        });
+        m.roots[o] = m.collapse_object(tree, mesh, o, parallel);
         object_boxes.push_back(tree.nodes[0].box);
         placed.push_back(o);
     }

@@ -25,7 +25,9 @@ using simd::Floats;
 constexpr int bin_count = 16;            // at most; 8 for nodes of up to 32 primitives
 constexpr std::uint32_t chunk = 4096;    // references per job of a chunked pass
 constexpr std::uint32_t max_depth = 64;  // deeper, ranges are halved (bounds the stacks)
-constexpr std::uint32_t small = 16;      // ranges split at their median, not binned
+constexpr std::uint32_t sampled = 512;   // references binned at least, of larger ranges
+constexpr std::uint32_t max_stride = 16;
+constexpr std::uint32_t small = 16;  // ranges split at their median, not binned
 
 // A primitive's box; lane 3 of `lo` holds its index (as bits), of `hi` zero.
 struct alignas(16) Ref {
@@ -123,21 +125,32 @@ struct Binner {
     }
 };
 
-Bins bin_refs(const Ref* refs, std::uint32_t begin, std::uint32_t end, const Binner& binner) {
+// Two sets of bins, alternate references into each: neighbouring
+// references (neighbouring triangles) often fall into the same bins, and
+// with one set each update would wait on the one before it.
+Bins bin_refs(const Ref* refs, std::uint32_t begin, std::uint32_t end, std::uint32_t stride,
+              const Binner& binner) {
     Bins bins(binner.bins);
     const Floats keep = xyz_mask(), last(float(binner.bins - 1));
-    alignas(16) std::int32_t k[4];
-    for (std::uint32_t i = begin; i < end; ++i) {
-        const Floats lo = Floats::load_aligned(refs[i].lo) & keep;
-        const Floats hi = Floats::load_aligned(refs[i].hi);
+    const auto add = [&](Bins& into, const Ref& ref) {
+        alignas(16) std::int32_t k[4];
+        const Floats lo = Floats::load_aligned(ref.lo) & keep;
+        const Floats hi = Floats::load_aligned(ref.hi);
         const Floats f = xsimd::min((lo + hi - binner.c_lo) * binner.scale, last);
         xsimd::to_int(f).store_aligned(k);
         for (int a = 0; a < 3; ++a) {
-            bins.lo[a][k[a]] = xsimd::min(bins.lo[a][k[a]], lo);
-            bins.hi[a][k[a]] = xsimd::max(bins.hi[a][k[a]], hi);
-            ++bins.count[a][k[a]];
+            into.lo[a][k[a]] = xsimd::min(into.lo[a][k[a]], lo);
+            into.hi[a][k[a]] = xsimd::max(into.hi[a][k[a]], hi);
+            ++into.count[a][k[a]];
         }
+    };
+    std::uint32_t i = begin;
+    if (end - begin >= 64 * stride) {
+        Bins odd(binner.bins);
+        for (; i + stride < end; i += 2 * stride) add(bins, refs[i]), add(odd, refs[i + stride]);
+        bins.merge(odd);
     }
+    for (; i < end; i += stride) add(bins, refs[i]);
     return bins;
 }
 
@@ -203,10 +216,14 @@ struct Builder {
             return true;
         }
         const Binner binner(b, n <= 64 ? 8 : bin_count);
+        std::uint32_t stride = 1;
+        while (stride < max_stride && n >= 2 * stride * sampled) stride *= 2;
         const int used = binner.bins;
         const Bins bins = chunked<Bins>(
             parallel, begin, end,
-            [&](std::uint32_t s, std::uint32_t e) { return bin_refs(r, s, e, binner); });
+            [&](std::uint32_t s, std::uint32_t e) { return bin_refs(r, s, e, stride, binner); });
+        std::uint32_t binned = 0;
+        for (int k = 0; k < used; ++k) binned += bins.count[0][k];
         // Sweep each axis: cost of splitting before bin k.
         float best_cost = std::numeric_limits<float>::infinity();
         int best_axis = -1, best_k = 0;
@@ -226,7 +243,7 @@ struct Builder {
             for (int k = 1; k < used; ++k) {
                 llo = xsimd::min(llo, bins.lo[a][k - 1]), lhi = xsimd::max(lhi, bins.hi[a][k - 1]);
                 ln += bins.count[a][k - 1];
-                if (ln == 0 || ln == n) continue;
+                if (ln == 0 || ln == binned) continue;
                 const float cost = half_area(llo, lhi) * float(blocks(ln)) + right_cost[k];
                 if (cost < best_cost) best_cost = cost, best_axis = a, best_k = k;
             }
