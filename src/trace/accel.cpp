@@ -207,107 +207,123 @@ struct Accel::Impl {
         return index;
     }
 
-    // Where a collapse writes next in `nodes` and `blocks`.
-    struct Cursor {
-        std::uint32_t node = 0, block = 0;
-    };
     // A child that stands for binary node holes[h] until that is collapsed.
     static constexpr std::uint32_t hole_bit = 0x40000000u;
 
-    // How many nodes and blocks collapsing binary node `at` makes, down to
-    // `cut` levels of four-wide nodes (an inner node there is appended to
-    // `holes` instead; a negative `cut`: all levels).
-    static Cursor count(const build::Tree& tree, std::uint32_t at, int cut,
-                        std::vector<std::uint32_t>* holes) {
+    // How many four-wide nodes collapsing binary node `at` makes, down to
+    // `cut` levels (an inner node there is appended to `holes` instead; a
+    // negative `cut`: all levels).
+    static std::uint32_t count(const build::Tree& tree, std::uint32_t at, int cut,
+                               std::vector<std::uint32_t>* holes) {
         const build::Node& node = tree.nodes[at];
-        if (node.count > 0) return {0, 1};
+        if (node.count > 0) return 0;
         if (cut == 0) {
             holes->push_back(at);
-            return {};
+            return 0;
         }
         std::uint32_t open[4];
         const int size = open_children(tree, node, open);
-        Cursor sum{1, 0};
-        for (int i = 0; i < size; ++i) {
-            const Cursor c = count(tree, open[i], cut - 1, holes);
-            sum.node += c.node, sum.block += c.block;
-        }
+        std::uint32_t sum = 1;
+        for (int i = 0; i < size; ++i) sum += count(tree, open[i], cut - 1, holes);
         return sum;
     }
 
-    // Collapses binary node `at` (object `object`'s tree) into the nodes
-    // and blocks at `at_`, in the order count() counts them, and returns it;
-    // down to `cut` levels, where the h-th inner node becomes hole_bit | h.
-    std::uint32_t fill(const build::Tree& tree, std::uint32_t at, const MeshView& mesh,
-                       std::uint32_t object, int cut, Cursor& next, std::uint32_t& holes) {
+    // Collapses binary node `at` into the nodes from `next` on, in the order
+    // count() counts them, and returns it; down to `cut` levels, where the
+    // h-th inner node becomes hole_bit | h. A binary leaf starting at
+    // tree.order[a] is block block_index[a].
+    std::uint32_t fill(const build::Tree& tree, std::uint32_t at,
+                       const std::vector<std::uint32_t>& block_index, int cut, std::uint32_t& next,
+                       std::uint32_t& holes) {
         const build::Node& node = tree.nodes[at];
-        if (node.count > 0) {
-            blocks[next.block] =
-                block_of(mesh, object, std::span(tree.order).subspan(node.a, node.count));
-            return leaf_bit | next.block++;
-        }
+        if (node.count > 0) return leaf_bit | block_index[node.a];
         if (cut == 0) return hole_bit | holes++;
         std::uint32_t open[4];
         const int size = open_children(tree, node, open);
-        const std::uint32_t index = next.node++;
+        const std::uint32_t index = next++;
         Node4 out = node_of(tree, open, size);
         for (int i = 0; i < size; ++i)
-            out.child[i] = fill(tree, open[i], mesh, object, cut - 1, next, holes);
+            out.child[i] = fill(tree, open[i], block_index, cut - 1, next, holes);
         nodes[index] = out;
         return index;
     }
 
-    // Collapses object `object`'s binary tree and returns its root. A large
-    // object's collapse (a tenth of its build) runs on the lent threads:
-    // the top three levels, then each subtree below them, counted first so
+    // Collapses object `object`'s binary tree and returns its root, on the
+    // lent threads: its blocks first, one per binary leaf in the order of
+    // their triangles in tree.order (a flat pass, fetching the triangles
+    // ahead: the triangles of neighbouring leaves lie anywhere in the mesh,
+    // and waiting on them was most of the collapse's time); then the nodes,
+    // the top three levels and each subtree below them, counted first so
     // that each is written in place.
     std::uint32_t collapse_object(const build::Tree& tree, const MeshView& mesh,
                                   std::uint32_t object, const ParallelFor& parallel) {
+        const std::span<const std::uint32_t> order = tree.order;
+        std::vector<std::uint32_t> block_index(order.size(), 0), starts;
+        for (const build::Node& node : tree.nodes)
+            if (node.count > 0) block_index[node.a] = 1;
+        for (std::uint32_t a = 0; a < order.size(); ++a)
+            if (block_index[a]) {
+                block_index[a] = static_cast<std::uint32_t>(blocks.size() + starts.size());
+                starts.push_back(a);
+            }
+        starts.push_back(static_cast<std::uint32_t>(order.size()));
+        const std::size_t first = blocks.size(), leaves = starts.size() - 1;
+        blocks.resize(first + leaves);
+        parallel_chunks(parallel, leaves, 1024, [&](std::size_t b) {
+            constexpr std::size_t ahead = 8;
+            if (b + 2 * ahead < leaves)
+                __builtin_prefetch(&mesh.triangles[order[starts[b + 2 * ahead]]]);
+            if (b + ahead < leaves)
+                for (const std::uint32_t v : mesh.triangles[order[starts[b + ahead]]])
+                    __builtin_prefetch(&mesh.positions[v]);
+            fill_block(blocks[first + b], mesh, object,
+                       order.subspan(starts[b], starts[b + 1] - starts[b]));
+        });
+
         constexpr std::size_t parted = 16384;  // triangles; fewer are collapsed at once
-        const int cut = tree.order.size() < parted ? -1 : 3;
+        const int cut = order.size() < parted ? -1 : 3;
         std::vector<std::uint32_t> holes;
-        const Cursor top = count(tree, 0, cut, &holes);
-        std::vector<Cursor> starts(holes.size());
+        const std::uint32_t top = count(tree, 0, cut, &holes);
+        std::vector<std::uint32_t> at(holes.size());
         run_parallel(parallel, holes.size(),
-                     [&](std::size_t h) { starts[h] = count(tree, holes[h], -1, nullptr); });
-        Cursor end{static_cast<std::uint32_t>(nodes.size()) + top.node,
-                   static_cast<std::uint32_t>(blocks.size()) + top.block};
-        for (Cursor& start : starts) {
-            const Cursor size = start;
-            start = end;
-            end.node += size.node, end.block += size.block;
+                     [&](std::size_t h) { at[h] = count(tree, holes[h], -1, nullptr); });
+        auto end = static_cast<std::uint32_t>(nodes.size()) + top;
+        for (std::uint32_t& start : at) {
+            const std::uint32_t size = start;
+            start = end, end += size;
         }
-        Cursor next{static_cast<std::uint32_t>(nodes.size()),
-                    static_cast<std::uint32_t>(blocks.size())};
-        nodes.resize(end.node), blocks.resize(end.block);
+        auto next = static_cast<std::uint32_t>(nodes.size());
+        nodes.resize(end);
         std::uint32_t hole = 0;
-        const std::uint32_t root = fill(tree, 0, mesh, object, cut, next, hole);
+        const std::uint32_t root = fill(tree, 0, block_index, cut, next, hole);
         std::vector<std::uint32_t> roots(holes.size());
         run_parallel(parallel, holes.size(), [&](std::size_t h) {
             std::uint32_t none = 0;
-            roots[h] = fill(tree, holes[h], mesh, object, -1, starts[h], none);
+            roots[h] = fill(tree, holes[h], block_index, -1, at[h], none);
         });
         // The top's children that stand for holes (a hole is never the root,
         // and the top's nodes are fewer than hole_bit).
-        for (std::uint32_t i = next.node - top.node; i < next.node; ++i)
+        for (std::uint32_t i = next - top; i < next; ++i)
             for (std::uint32_t& child : nodes[i].child)
                 if (child != empty && !(child & leaf_bit) && (child & hole_bit))
                     child = roots[child & ~hole_bit];
         return root;
     }
 
-    static Block block_of(const MeshView& mesh, std::uint32_t object,
-                          std::span<const std::uint32_t> triangles) {
-        Block block{};
+    // `block` (zeros) holding `triangles` of object `object`.
+    static void fill_block(Block& block, const MeshView& mesh, std::uint32_t object,
+                           std::span<const std::uint32_t> triangles) {
         block.object = object;
         block.count = static_cast<std::uint32_t>(triangles.size());
         for (std::uint32_t l = 0; l < block.count; ++l) {
             block.triangle[l] = triangles[l];
             const auto& tri = mesh.triangles[triangles[l]];
-            for (int v = 0; v < 3; ++v)
-                for (int a = 0; a < 3; ++a) block.corner[3 * v + a][l] = mesh.positions[tri[v]][a];
+            for (int v = 0; v < 3; ++v) {
+                const glm::vec3& p = mesh.positions[tri[v]];
+                block.corner[3 * v][l] = p.x, block.corner[3 * v + 1][l] = p.y,
+                                 block.corner[3 * v + 2][l] = p.z;
+            }
         }
-        return block;
     }
 
     void prefetch(std::uint32_t child) const {
