@@ -9,9 +9,12 @@
 // (Embree's device and geometry are made before the clock starts).
 //
 //   litkit_build_peer [--threads T] [--rounds R]
+//   litkit_build_peer --once
 //
 // Prints both sides' smallest and median times over the rounds and their
-// ratio (Embree / litkit: above 1, litkit's build is the faster).
+// ratio (Embree / litkit: above 1, litkit's build is the faster). --once
+// builds litkit's hierarchy once on the calling thread and nothing else,
+// for counting its instructions (valgrind --tool=callgrind).
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -45,13 +48,16 @@ double median(std::vector<double> values) {
 
 int main(int argc, char** argv) {
     int threads = 2, rounds = 15;
+    bool once = false;
     for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+        if (std::strcmp(argv[i], "--once") == 0) {
+            once = true;
+        } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
             threads = std::atoi(argv[++i]);
         } else if (std::strcmp(argv[i], "--rounds") == 0 && i + 1 < argc) {
             rounds = std::atoi(argv[++i]);
         } else {
-            std::fprintf(stderr, "usage: %s [--threads T] [--rounds R]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--threads T] [--rounds R] | --once\n", argv[0]);
             return 2;
         }
     }
@@ -61,6 +67,10 @@ int main(int argc, char** argv) {
     }
     const litkit::Mesh mesh = litkit::make_sphere(1.0f, 512, 256);
     const std::vector<litkit::trace::MeshView> objects{{mesh.positions, mesh.triangles}};
+    if (once) {
+        const litkit::trace::Accel accel(objects);
+        return accel.nearest_front({{0.0f, 0.0f, 3.0f}, {0, 0, -1}}).found() ? 0 : 1;
+    }
     litkit::ThreadPool pool(threads);
     const litkit::ParallelFor lent =
         threads > 1
