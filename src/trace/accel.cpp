@@ -30,6 +30,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <new>
 #include <utility>
 #include <vector>
 
@@ -144,12 +146,34 @@ struct alignas(16) Block {
     std::uint32_t object, count;
 };
 
+// An allocator whose vectors leave new elements of a resize unset (every
+// node and block is written whole after it): zeroing the 15 MB of a large
+// mesh's hierarchy first would be one more pass, on one thread.
+template <class T>
+struct Unset : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = Unset<U>;
+    };
+    Unset() = default;
+    template <class U>
+    explicit Unset(const Unset<U>&) noexcept {}
+    template <class U>
+    void construct(U* at) noexcept {
+        ::new (static_cast<void*>(at)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* at, Args&&... args) {
+        ::new (static_cast<void*>(at)) U(std::forward<Args>(args)...);
+    }
+};
+
 }  // namespace
 
 struct Accel::Impl {
     std::vector<MeshView> objects;
-    std::vector<Node4> nodes;
-    std::vector<Block> blocks;
+    std::vector<Node4, Unset<Node4>> nodes;
+    std::vector<Block, Unset<Block>> blocks;
     std::vector<std::uint32_t> roots;  // per object: its root (a child), or empty
     std::uint32_t top = empty;
 

@@ -368,17 +368,25 @@ Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const Parall
         parts[j].resize(1);
         builder.subtree(parts[j], 0, jobs[j].begin, jobs[j].end, jobs[j].depth, jobs[j].bounds);
     });
-    for (std::size_t j = 0; j < jobs.size(); ++j) {
-        const auto offset = static_cast<std::uint32_t>(nodes.size()) - 1;  // part's 1 → offset + 1
+    // Each part's nodes after the last's, its root in its job's node (a
+    // part's node i > 0 is node at[j] + i − 1), moved in on the lent threads.
+    std::vector<std::uint32_t> at(jobs.size());
+    auto size = static_cast<std::uint32_t>(nodes.size());
+    for (std::size_t j = 0; j < jobs.size(); ++j)
+        at[j] = size, size += static_cast<std::uint32_t>(parts[j].size()) - 1;
+    nodes.resize(size);
+    run_parallel(parallel, jobs.size(), [&](std::size_t j) {
+        const std::uint32_t offset = at[j] - 1;  // part's 1 → at[j]
         auto remap = [&](Node node) {
             if (node.count == 0) node.a += offset, node.b += offset;
             return node;
         };
         nodes[jobs[j].node] = remap(parts[j][0]);
-        for (std::size_t i = 1; i < parts[j].size(); ++i) nodes.push_back(remap(parts[j][i]));
-    }
+        for (std::size_t i = 1; i < parts[j].size(); ++i) nodes[offset + i] = remap(parts[j][i]);
+    });
     tree.order.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) tree.order[i] = id_of(builder.refs[i]);
+    parallel_chunks(parallel, n, chunk,
+                    [&](std::size_t i) { tree.order[i] = id_of(builder.refs[i]); });
     return tree;
 }
 
