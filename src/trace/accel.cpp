@@ -527,16 +527,8 @@ Accel::Accel(std::span<const MeshView> objects, const ParallelFor& parallel)
     for (std::uint32_t o = 0; o < objects.size(); ++o) {
         const MeshView& mesh = objects[o];
         if (mesh.triangles.empty()) continue;
-        std::vector<build::Box> boxes(mesh.triangles.size());
-        parallel_chunks(parallel, boxes.size(), 4096, [&](std::size_t i) {
-            const auto& [i0, i1, i2] = mesh.triangles[i];
-            const glm::vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1],
-                            &p2 = mesh.positions[i2];
-            const glm::vec3 lo = glm::min(glm::min(p0, p1), p2),
-                            hi = glm::max(glm::max(p0, p1), p2);
-            boxes[i] = build::Box{{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}};
-        });
-        const build::Tree tree = build::build_tree(boxes, 4, parallel);
+        const build::Tree tree =
+            build::build_triangles(mesh.positions, mesh.triangles, 4, parallel);
         m.roots[o] = m.collapse_object(tree, mesh, o, parallel);
         object_boxes.push_back(tree.nodes[0].box);
         placed.push_back(o);

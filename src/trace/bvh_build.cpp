@@ -14,6 +14,8 @@
 #include <array>
 #include <cstring>
 
+#include <glm/common.hpp>
+
 #include "trace/simd.hpp"
 
 namespace litkit::trace::build {
@@ -294,21 +296,11 @@ struct Builder {
     }
 };
 
-}  // namespace
-
-Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const ParallelFor& parallel) {
+// The tree over `builder`'s references (build_tree, build_triangles).
+Tree build(Builder& builder, const ParallelFor& parallel) {
     Tree tree;
-    const auto n = static_cast<std::uint32_t>(boxes.size());
+    const auto n = static_cast<std::uint32_t>(builder.refs.size());
     if (n == 0) return tree;
-    Builder builder{std::vector<Ref>(n), max_leaf};
-    parallel_chunks(parallel, n, chunk, [&](std::size_t i) {
-        Ref& ref = builder.refs[i];
-        const auto id = static_cast<std::uint32_t>(i);
-        std::copy(boxes[i].lo, boxes[i].lo + 3, ref.lo);
-        std::copy(boxes[i].hi, boxes[i].hi + 3, ref.hi);
-        std::memcpy(&ref.lo[3], &id, sizeof id);
-        ref.hi[3] = 0.0f;
-    });
     const ParallelFor* lent = parallel ? &parallel : nullptr;
 
     // The upper part, a level at a time, until the ranges are small enough
@@ -388,6 +380,37 @@ Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const Parall
     parallel_chunks(parallel, n, chunk,
                     [&](std::size_t i) { tree.order[i] = id_of(builder.refs[i]); });
     return tree;
+}
+
+// Reference i: box `lo`, `hi`, index i.
+void set_ref(Ref& ref, std::size_t i, const float* lo, const float* hi) {
+    const auto id = static_cast<std::uint32_t>(i);
+    std::copy(lo, lo + 3, ref.lo), std::copy(hi, hi + 3, ref.hi);
+    std::memcpy(&ref.lo[3], &id, sizeof id);
+    ref.hi[3] = 0.0f;
+}
+
+}  // namespace
+
+Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const ParallelFor& parallel) {
+    Builder builder{std::vector<Ref>(boxes.size()), max_leaf};
+    parallel_chunks(parallel, boxes.size(), chunk,
+                    [&](std::size_t i) { set_ref(builder.refs[i], i, boxes[i].lo, boxes[i].hi); });
+    return build(builder, parallel);
+}
+
+Tree build_triangles(std::span<const glm::vec3> positions,
+                     std::span<const std::array<std::uint32_t, 3>> triangles,
+                     std::uint32_t max_leaf, const ParallelFor& parallel) {
+    Builder builder{std::vector<Ref>(triangles.size()), max_leaf};
+    parallel_chunks(parallel, triangles.size(), chunk, [&](std::size_t i) {
+        const auto& [i0, i1, i2] = triangles[i];
+        const glm::vec3 &p0 = positions[i0], &p1 = positions[i1], &p2 = positions[i2];
+        const glm::vec3 lo = glm::min(glm::min(p0, p1), p2), hi = glm::max(glm::max(p0, p1), p2);
+        const float l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+        set_ref(builder.refs[i], i, l, h);
+    });
+    return build(builder, parallel);
 }
 
 }  // namespace litkit::trace::build

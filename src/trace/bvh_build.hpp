@@ -7,6 +7,9 @@
 // triangles the traversal tests at once.
 #pragma once
 
+#include <glm/vec3.hpp>
+
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -38,5 +41,11 @@ struct Tree {
 // Builds over primitives 0 … boxes.size() − 1 with at most `max_leaf` in a
 // leaf. Whatever `parallel` lends, the tree is the same.
 Tree build_tree(std::span<const Box> boxes, std::uint32_t max_leaf, const ParallelFor& parallel);
+
+// The same over triangles (corners positions[t[0]], [t[1]], [t[2]]): their
+// boxes made where build_tree copies them, in one pass.
+Tree build_triangles(std::span<const glm::vec3> positions,
+                     std::span<const std::array<std::uint32_t, 3>> triangles,
+                     std::uint32_t max_leaf, const ParallelFor& parallel);
 
 }  // namespace litkit::trace::build
