@@ -547,10 +547,10 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         // unchecked: fuzz_obj found "vw 1 1e9990" (docs/reliability.md).
         {"vw 1 1e9990 0.5", "mesh.obj:3:6: error: cannot read '" + std::string("mesh.obj") +
                                 "': vertex weight's joint '1e9990' is not a joint number (0 to "
-                                "2147483647)"},
+                                "2147483520)"},
         {"vw 1 3e9 0.5", "mesh.obj:3:6: error: cannot read '" + std::string("mesh.obj") +
                              "': vertex weight's joint '3e9' is not a joint number (0 to "
-                             "2147483647)"},
+                             "2147483520)"},
         {"vw 1.5 2 0.5", "mesh.obj:3:4: error: cannot read '" + std::string("mesh.obj") +
                              "': vertex weight's vertex '1.5' is not a vertex number (0 to "
                              "2147483647)"},
@@ -563,6 +563,25 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         {"t name 0/1/0 -.E+0002147483649",
          "mesh.obj:3:14: error: cannot read '" + std::string("mesh.obj") +
              "': tag value '-.E+0002147483649' is beyond the range of numbers litkit reads"},
+        // A zero with such an exponent is 0 for std::from_chars, not for
+        // tinyobjloader; a joint that rounds to 2^31 as a float; a face
+        // index whose negation overflows; a coordinate beyond a float.
+        {"v 0e2147483648 0 0", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+                                   "': vertex x coordinate '0e2147483648' is beyond the range of "
+                                   "numbers litkit reads"},
+        {"vw 1 2147483600 0.5", "mesh.obj:3:6: error: cannot read '" + std::string("mesh.obj") +
+                                    "': vertex weight's joint '2147483600' is not a joint number "
+                                    "(0 to 2147483520)"},
+        {"f -9223372036854775808 1 2",
+         "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+             "': face 1 refers to vertex -9223372036854775808, but the file defines 2 vertices "
+             "before it"},
+        {"v 1e39 0 0", "mesh.obj:3:3: error: cannot read '" + std::string("mesh.obj") +
+                           "': vertex x coordinate '1e39' is beyond the range of numbers litkit "
+                           "reads"},
+        {"vw 1 2 -1e39", "mesh.obj:3:8: error: cannot read '" + std::string("mesh.obj") +
+                             "': vertex weight's weight '-1e39' is beyond the range of numbers "
+                             "litkit reads"},
         // A lone carriage return ends a line, for tinyobjloader and so for
         // litkit: the vertex is line 4.
         {"s 1\rv 0 0 12e214748364838",
@@ -577,9 +596,12 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         // The mesh file's path is resolved against the scene's folder.
         EXPECT_EQ(run.output, expected + after) << line;
     }
-    // The same lines one digit short of the overflow are read (a weight or
-    // a tag's real of 1e2147483647 is infinite, and litkit uses neither).
-    for (const char* line : {"vw 1 2 12e2147483647", "t name 0/1/0 -.E+0002147483647"}) {
+    // The same lines one digit short of the overflow are read (there
+    // tinyobjloader's weight or tag real is 0 · ∞, not a number, and litkit
+    // uses neither), as are a tag's name and counts that would be beyond
+    // the range as reals, and the largest joint.
+    for (const char* line : {"vw 1 2 0e2147483647", "t name 0/1/0 -.E+0002147483647",
+                             "t 1e2147483648 1e2147483648/0/0", "vw 1 2147483520 0.5"}) {
         write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + std::string(line) + "\nv 0 1 0\nf 1 2 3\n");
         CommandRun run = cli("check mesh.toml");
         EXPECT_EQ(run.status, 0) << line << run.output;

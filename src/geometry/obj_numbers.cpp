@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "litkit/error.hpp"
@@ -50,7 +51,8 @@ bool read_integer(std::string_view word, long long& value) {
 // Whether tinyobjloader's number reader (tryParseDouble) would overflow an
 // int on `word`'s exponent: its guard lets 214748364 · 10 + 8 and + 9
 // through, undefined behaviour (found by fuzz_obj). Its grammar, followed
-// as it reads: [sign] (digits [. digits] | . digits) e [sign] digits.
+// as it reads: [sign] (digits [. [digits]] | . [digits]) (e | E) [sign]
+// digits.
 bool exponent_overflows_reader(std::string_view word) {
     const auto digit = [&](std::size_t i) {
         return i < word.size() && word[i] >= '0' && word[i] <= '9';
@@ -72,6 +74,22 @@ bool exponent_overflows_reader(std::string_view word) {
     const std::string_view exponent = word.substr(i);
     return exponent.size() >= 10 && exponent.starts_with("214748364") && digit(i + 9) &&
            word[i + 9] >= '8';
+}
+
+// Beyond a float's range (what tinyobjloader stores every real as).
+bool beyond_float(double value) {
+    return std::isfinite(value) && std::abs(value) > std::numeric_limits<float>::max();
+}
+
+// A word tinyobjloader reads as a real that it cannot read safely: an
+// exponent that overflows its reader, or a number beyond a float's range.
+// (Not a number at all: it reads its default, safely.)
+bool beyond_reader(std::string_view word) {
+    double value = 0;
+    bool out_of_range = false;
+    if (exponent_overflows_reader(word)) return true;
+    const bool number = read_number(word, value, out_of_range);
+    return out_of_range || (number && beyond_float(value));
 }
 
 struct Counts {
@@ -121,7 +139,8 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                 const std::string axis =
                     i - 1 < 4 && *axes[i - 1] ? std::string(" ") + axes[i - 1] : "";
                 bool out_of_range = false;
-                if (!read_number(words[i].text, value, out_of_range) && out_of_range) {
+                if (exponent_overflows_reader(words[i].text) ||
+                    (!read_number(words[i].text, value, out_of_range) && out_of_range)) {
                     fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
                                               "' is beyond the range of numbers litkit reads");
                 }
@@ -135,6 +154,11 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                 if (!std::isfinite(value))
                     fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
                                               "' is not a finite number");
+                // Stored as a float: a double beyond its range has no float
+                // to round to (undefined, not infinity, by the letter).
+                if (beyond_float(value))
+                    fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
+                                              "' is beyond the range of numbers litkit reads");
             }
         };
         if (keyword == "v") {
@@ -160,20 +184,25 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
             for (std::size_t i = 2; i < words.size(); i += 2) {
                 double joint = 0;
                 bool out_of_range = false;
-                if (!read_number(words[i].text, joint, out_of_range) ||
-                    !(joint >= 0.0 && joint <= 2147483647.0))
+                // Read as a double, stored as a float, made an int: the
+                // float must be below 2^31 (2147483600 rounds up to it).
+                if (exponent_overflows_reader(words[i].text) ||
+                    !read_number(words[i].text, joint, out_of_range) ||
+                    !(joint >= 0.0 && joint <= 2147483647.0 &&
+                      static_cast<float>(joint) < 2147483648.0f))
                     fail(words[i].column, "vertex weight's joint '" + std::string(words[i].text) +
-                                              "' is not a joint number (0 to 2147483647)");
-                if (i + 1 < words.size() && exponent_overflows_reader(words[i + 1].text))
+                                              "' is not a joint number (0 to 2147483520)");
+                if (i + 1 < words.size() && beyond_reader(words[i + 1].text))
                     fail(words[i + 1].column, "vertex weight's weight '" +
                                                   std::string(words[i + 1].text) +
                                                   "' is beyond the range of numbers litkit reads");
             }
         } else if (keyword == "t") {
-            // Tags (name, counts, then integers, reals and strings): litkit
-            // uses none, but the parser reads their reals too.
-            for (std::size_t i = 1; i < words.size(); ++i)
-                if (exponent_overflows_reader(words[i].text))
+            // Tags ("t name ints/reals/strings", then the values): litkit
+            // uses none, but the parser reads their reals too. Any value
+            // that reads as a number is held to the reals' range.
+            for (std::size_t i = 3; i < words.size(); ++i)
+                if (beyond_reader(words[i].text))
                     fail(words[i].column, "tag value '" + std::string(words[i].text) +
                                               "' is beyond the range of numbers litkit reads");
         } else if (keyword == "f") {
@@ -197,7 +226,7 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                                              std::string(index_text) + "' is not a " + kinds[part] +
                                              " number (1, 2, … or -1, -2, …)");
                         const bool in_range =
-                            index > 0 ? index <= defined[part] : -index <= before[part];
+                            index > 0 ? index <= defined[part] : index >= -before[part];
                         if (!in_range) {
                             const std::string face = words.size() >= 4
                                                          ? "face " + std::to_string(face_number)

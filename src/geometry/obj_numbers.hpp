@@ -11,9 +11,11 @@
 namespace litkit::detail {
 
 // Throws IoError located at "mesh.obj:LINE:COLUMN" for the first coordinate
-// of `v`, `vn` or `vt` that is missing, not a number or not finite, and for
-// the first face index that is not an integer or refers to no vertex
-// (texture coordinate, normal) of the file.
+// of `v`, `vn` or `vt` that is missing, not a number, not finite or beyond a
+// float's range, for the first face index that is not an integer or refers
+// to no vertex (texture coordinate, normal) of the file, and for what
+// tinyobjloader would read with undefined behaviour in the lines litkit does
+// not use (the joints and weights of `vw`, the reals of `t` tags).
 void check_obj_numbers(std::string_view text, const std::string& name);
 
 // The line of `text` that starts at `at`, split as tinyobjloader splits
