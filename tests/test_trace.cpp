@@ -17,6 +17,7 @@
 
 #include "litkit/shapes.hpp"
 #include "trace/accel.hpp"
+#include "trace/bvh_build.hpp"
 
 namespace {
 
@@ -262,6 +263,57 @@ TEST(Accel, RaisesNoInvalidOperationOrDivisionByZero) {
     EXPECT_FALSE(std::fetestexcept(FE_INVALID));
     EXPECT_FALSE(std::fetestexcept(FE_DIVBYZERO));
     EXPECT_GE(found, 5);
+}
+
+// The same for blocks of fewer than four triangles whatever their memory
+// held before: the hierarchy's arrays are not zeroed before they are
+// written (accel.cpp), so the spare lanes must be written too. The heap is
+// first filled with NaN bit patterns and given back, where the next
+// allocations find it.
+TEST(Accel, PartFilledBlocksRaiseNothingWhateverTheHeapHeld) {
+    {
+        std::vector<std::vector<unsigned char>> poison;
+        for (std::size_t size = 64; size <= (1u << 20); size *= 2)
+            for (int copies = 0; copies < 4; ++copies) poison.emplace_back(size, 0xff);
+    }
+    Owned five;
+    for (std::uint32_t i = 0; i < 5; ++i) {
+        const float x = 2.0f * static_cast<float>(i);
+        five.positions.insert(five.positions.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}});
+        five.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    const std::vector<MeshView> objects{five.view()};
+    const Accel accel(objects);
+    std::feclearexcept(FE_ALL_EXCEPT);
+    int found = 0;
+    for (std::uint32_t i = 0; i < 5; ++i) {
+        const Ray ray{{2.0f * static_cast<float>(i) + 0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}};
+        const Hit hit = accel.nearest_front(ray);
+        found += hit.found() && hit.triangle == i;
+    }
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID));
+    EXPECT_FALSE(std::fetestexcept(FE_DIVBYZERO));
+    EXPECT_EQ(found, 5);
+}
+
+// A large range is binned from a sample (bvh_build.cpp); when every
+// sampled centroid falls into one bin, the others are binned too, so that
+// a reference the sample missed still decides the split. 2,047 equal
+// triangles and one far away at an odd index (binned every second): the
+// far one is a leaf of its own under the root, not half of an index split.
+TEST(BvhBuild, ASampleInOneBinIsBinnedWhole) {
+    using litkit::trace::build::Box;
+    std::vector<Box> boxes(2048, Box{{0.0f, 0.0f, 0.0f}, {0.001f, 0.001f, 0.001f}});
+    boxes[1025] = Box{{100.0f, 100.0f, 100.0f}, {100.001f, 100.001f, 100.001f}};
+    const litkit::trace::build::Tree tree = litkit::trace::build::build_tree(boxes, 4, {});
+    const litkit::trace::build::Node& root = tree.nodes.at(0);
+    ASSERT_EQ(root.count, 0u);
+    int alone = 0;
+    for (const std::uint32_t child : {root.a, root.b}) {
+        const litkit::trace::build::Node& node = tree.nodes.at(child);
+        alone += node.count == 1 && tree.order.at(node.a) == 1025;
+    }
+    EXPECT_EQ(alone, 1);
 }
 
 // Random rays in all, three quarters from anywhere and a quarter from

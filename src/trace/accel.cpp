@@ -334,16 +334,19 @@ struct Accel::Impl {
         return root;
     }
 
-    // `block` (zeros) holding `triangles` of object `object`.
+    // `block` holding `triangles` of object `object`, whole: its lanes
+    // past them 0 (the four-wide test computes on every lane, and what an
+    // allocation held before could be a NaN; Accel.RaisesNoInvalid...).
     static void fill_block(Block& block, const MeshView& mesh, std::uint32_t object,
                            std::span<const std::uint32_t> triangles) {
         block.object = object;
         block.count = static_cast<std::uint32_t>(triangles.size());
-        for (std::uint32_t l = 0; l < block.count; ++l) {
-            block.triangle[l] = triangles[l];
-            const auto& tri = mesh.triangles[triangles[l]];
+        for (std::uint32_t l = 0; l < 4; ++l) {
+            const bool used = l < block.count;
+            block.triangle[l] = used ? triangles[l] : 0;
             for (int v = 0; v < 3; ++v) {
-                const glm::vec3& p = mesh.positions[tri[v]];
+                const glm::vec3 p =
+                    used ? mesh.positions[mesh.triangles[triangles[l]][v]] : glm::vec3(0.0f);
                 block.corner[3 * v][l] = p.x, block.corner[3 * v + 1][l] = p.y,
                                  block.corner[3 * v + 2][l] = p.z;
             }

@@ -24,7 +24,7 @@ namespace {
 
 using simd::Floats;
 
-constexpr int bin_count = 16;            // at most; 8 for nodes of up to 32 primitives
+constexpr int bin_count = 16;            // at most; 8 for nodes of up to 64 primitives
 constexpr std::uint32_t chunk = 4096;    // references per job of a chunked pass
 constexpr std::uint32_t max_depth = 64;  // deeper, ranges are halved (bounds the stacks)
 constexpr std::uint32_t sampled = 512;   // references binned at least, of larger ranges
@@ -221,34 +221,43 @@ struct Builder {
         std::uint32_t stride = 1;
         while (stride < max_stride && n >= 2 * stride * sampled) stride *= 2;
         const int used = binner.bins;
-        const Bins bins = chunked<Bins>(
-            parallel, begin, end,
-            [&](std::uint32_t s, std::uint32_t e) { return bin_refs(r, s, e, stride, binner); });
-        std::uint32_t binned = 0;
-        for (int k = 0; k < used; ++k) binned += bins.count[0][k];
-        // Sweep each axis: cost of splitting before bin k.
-        float best_cost = std::numeric_limits<float>::infinity();
+        // Binned from a sample, every sampled centroid may fall in one bin
+        // while the others spread: then they are binned all.
+        Bins bins;
+        float best_cost = 0.0f;
         int best_axis = -1, best_k = 0;
-        for (int a = 0; a < 3; ++a) {
-            std::array<float, bin_count> right_cost{};
-            Floats rlo(std::numeric_limits<float>::infinity()),
-                rhi(-std::numeric_limits<float>::infinity());
-            std::uint32_t rn = 0;
-            for (int k = used - 1; k > 0; --k) {
-                rlo = xsimd::min(rlo, bins.lo[a][k]), rhi = xsimd::max(rhi, bins.hi[a][k]);
-                rn += bins.count[a][k];
-                right_cost[k] = rn ? half_area(rlo, rhi) * float(blocks(rn)) : -1.0f;
+        while (true) {
+            bins = chunked<Bins>(parallel, begin, end, [&](std::uint32_t s, std::uint32_t e) {
+                return bin_refs(r, s, e, stride, binner);
+            });
+            std::uint32_t binned = 0;
+            for (int k = 0; k < used; ++k) binned += bins.count[0][k];
+            // Sweep each axis: cost of splitting before bin k.
+            best_cost = std::numeric_limits<float>::infinity(), best_axis = -1, best_k = 0;
+            for (int a = 0; a < 3; ++a) {
+                std::array<float, bin_count> right_cost{};
+                Floats rlo(std::numeric_limits<float>::infinity()),
+                    rhi(-std::numeric_limits<float>::infinity());
+                std::uint32_t rn = 0;
+                for (int k = used - 1; k > 0; --k) {
+                    rlo = xsimd::min(rlo, bins.lo[a][k]), rhi = xsimd::max(rhi, bins.hi[a][k]);
+                    rn += bins.count[a][k];
+                    right_cost[k] = rn ? half_area(rlo, rhi) * float(blocks(rn)) : -1.0f;
+                }
+                Floats llo(std::numeric_limits<float>::infinity()),
+                    lhi(-std::numeric_limits<float>::infinity());
+                std::uint32_t ln = 0;
+                for (int k = 1; k < used; ++k) {
+                    llo = xsimd::min(llo, bins.lo[a][k - 1]),
+                    lhi = xsimd::max(lhi, bins.hi[a][k - 1]);
+                    ln += bins.count[a][k - 1];
+                    if (ln == 0 || ln == binned) continue;
+                    const float cost = half_area(llo, lhi) * float(blocks(ln)) + right_cost[k];
+                    if (cost < best_cost) best_cost = cost, best_axis = a, best_k = k;
+                }
             }
-            Floats llo(std::numeric_limits<float>::infinity()),
-                lhi(-std::numeric_limits<float>::infinity());
-            std::uint32_t ln = 0;
-            for (int k = 1; k < used; ++k) {
-                llo = xsimd::min(llo, bins.lo[a][k - 1]), lhi = xsimd::max(lhi, bins.hi[a][k - 1]);
-                ln += bins.count[a][k - 1];
-                if (ln == 0 || ln == binned) continue;
-                const float cost = half_area(llo, lhi) * float(blocks(ln)) + right_cost[k];
-                if (cost < best_cost) best_cost = cost, best_axis = a, best_k = k;
-            }
+            if (best_axis >= 0 || stride == 1) break;
+            stride = 1;
         }
         const float area = half_area(b.lo, b.hi);
         // Traversing a node costs as much as testing one block.
