@@ -214,9 +214,12 @@ float box_entry(vec3 lo, vec3 hi, vec3 origin, vec3 inv, float limit) {
 // The nearest hit along origin + t*d (d unit), t > t_min: the two-level
 // hierarchy walked from the objects' root (node 0) for a ray in the room,
 // from object `inside`'s root (node 1 + inside) for a ray inside it. Each
-// node holds its two children's boxes; a leaf's triangles are tested from
+// node holds its two children's boxes; a leaf's triangles are found from
 // its parent, the nearer inner child is taken first, and a subtree is
-// skipped once its box lies beyond the nearest hit so far.
+// skipped once its box lies beyond the nearest hit so far. A SIMD group's
+// fragments run in lockstep, so the walk and the tests are two loops: each
+// walks until a leaf's triangles wait (or it is done), then all test
+// theirs at once (docs/design.md, "Glass through OpenGL").
 Hit nearest(vec3 origin, vec3 d, int inside, float t_min) {
     Hit best = Hit(NO_HIT, -1, 0, 0, 0.0, 0.0);
     if (u_node_count == 0) return best;
@@ -236,53 +239,62 @@ Hit nearest(vec3 origin, vec3 d, int inside, float t_min) {
     int stack[64];
     float entries[64];
     int sp = 0;
-    int node = inside < 0 ? 0 : 1 + inside;
+    int node = inside < 0 ? 0 : 1 + inside;  // -1: none (pop the stack)
+    float node_entry = 0.0;
+    int first = 0;  // the waiting triangles: first .. first + count - 1
+    int count = 0;
     while (true) {
-        vec4 a_lo = texelFetch(u_nodes, 4 * node);
-        vec4 a_hi = texelFetch(u_nodes, 4 * node + 1);
-        vec4 b_lo = texelFetch(u_nodes, 4 * node + 2);
-        vec4 b_hi = texelFetch(u_nodes, 4 * node + 3);
-        int a = floatBitsToInt(a_lo.w), a_count = floatBitsToInt(a_hi.w);
-        int b = floatBitsToInt(b_lo.w), b_count = floatBitsToInt(b_hi.w);
-        float a_entry = a_count < 0 ? NO_HIT : box_entry(a_lo.xyz, a_hi.xyz, origin, inv, best.t);
-        float b_entry = b_count < 0 ? NO_HIT : box_entry(b_lo.xyz, b_hi.xyz, origin, inv, best.t);
-        // Sibling leaves hold neighbouring triangles: one loop tests either
-        // or both.
-        int first = a_count > 0 && a_entry < NO_HIT ? a : b;
-        int count = (a_count > 0 && a_entry < NO_HIT ? a_count : 0) +
-                    (b_count > 0 && b_entry < NO_HIT ? b_count : 0);
-        if (a_count > 0) a_entry = NO_HIT;
-        if (b_count > 0) b_entry = NO_HIT;
+        while (count == 0) {
+            if (node_entry > best.t) node = -1;  // beyond the nearest hit so far
+            while (node < 0 && sp > 0) {
+                --sp;
+                if (entries[sp] <= best.t) {
+                    node = stack[sp];
+                    node_entry = entries[sp];
+                }
+            }
+            if (node < 0) break;
+            vec4 a_lo = texelFetch(u_nodes, 4 * node);
+            vec4 a_hi = texelFetch(u_nodes, 4 * node + 1);
+            vec4 b_lo = texelFetch(u_nodes, 4 * node + 2);
+            vec4 b_hi = texelFetch(u_nodes, 4 * node + 3);
+            int a = floatBitsToInt(a_lo.w), a_count = floatBitsToInt(a_hi.w);
+            int b = floatBitsToInt(b_lo.w), b_count = floatBitsToInt(b_hi.w);
+            float a_entry =
+                a_count < 0 ? NO_HIT : box_entry(a_lo.xyz, a_hi.xyz, origin, inv, best.t);
+            float b_entry =
+                b_count < 0 ? NO_HIT : box_entry(b_lo.xyz, b_hi.xyz, origin, inv, best.t);
+            // Sibling leaves hold neighbouring triangles: one range holds
+            // either or both.
+            bool a_leaf = a_count > 0 && a_entry < NO_HIT;
+            bool b_leaf = b_count > 0 && b_entry < NO_HIT;
+            first = a_leaf ? a : b;
+            count = (a_leaf ? a_count : 0) + (b_leaf ? b_count : 0);
+            if (a_count > 0) a_entry = NO_HIT;
+            if (b_count > 0) b_entry = NO_HIT;
+            if (a_entry < NO_HIT && b_entry < NO_HIT) {
+                bool a_nearer = a_entry <= b_entry;
+                if (sp < 64) {
+                    stack[sp] = a_nearer ? b : a;
+                    entries[sp] = a_nearer ? b_entry : a_entry;
+                    ++sp;
+                }
+                node = a_nearer ? a : b;
+                node_entry = a_nearer ? a_entry : b_entry;
+            } else if (a_entry < NO_HIT) {
+                node = a;
+                node_entry = a_entry;
+            } else if (b_entry < NO_HIT) {
+                node = b;
+                node_entry = b_entry;
+            } else {
+                node = -1;
+            }
+        }
+        if (count == 0) break;  // nothing waits and nothing is left to walk
         for (int i = 0; i < count; ++i)
             intersect(origin, kx, ky, kz, shear, first + i, inside, t_min, best);
-        if (b_entry > best.t) b_entry = NO_HIT;  // beyond what a's leaf found
-        if (a_entry < NO_HIT && b_entry < NO_HIT) {
-            bool a_nearer = a_entry <= b_entry;
-            if (sp < 64) {
-                stack[sp] = a_nearer ? b : a;
-                entries[sp] = a_nearer ? b_entry : a_entry;
-                ++sp;
-            }
-            node = a_nearer ? a : b;
-            continue;
-        }
-        if (a_entry < NO_HIT) {
-            node = a;
-            continue;
-        }
-        if (b_entry < NO_HIT) {
-            node = b;
-            continue;
-        }
-        bool more = false;
-        while (sp > 0 && !more) {
-            --sp;
-            if (entries[sp] <= best.t) {
-                node = stack[sp];
-                more = true;
-            }
-        }
-        if (!more) break;
+        count = 0;
     }
     return best;
 }
@@ -464,7 +476,13 @@ Shaders generate_glass(const GlassProgram& program) {
         "//   u_faces      N_g of each triangle in drawing order (u_face_base + gl_PrimitiveID)\n"
         "// and u_node_count, u_room_ior, u_max_depth, u_min_distance (1e-6 x the room's\n"
         "// diagonal), u_background_light ((background/255)^gamma), u_object (the object's\n"
-        "// number), u_face_base, u_depth_only (1: a depth pass that traces nothing).\n";
+        "// number), u_face_base, u_pass, and in pass 2 four RGBA32F textures of the\n"
+        "// picture's size that pass 1 wrote (locations 0-3): u_record_point,\n"
+        "// u_record_normal, u_record_face, u_record_own. Pass 0 draws the glass objects'\n"
+        "// depth (colour masked), pass 1 the same objects again (depth test LEQUAL) into\n"
+        "// the four textures, cleared first to an object of -1, and pass 2 one triangle\n"
+        "// over the picture (u_view_projection the identity; no depth test) into the\n"
+        "// picture, with any one of the scene's glass programs.\n";
     vertex = header(program.reflection, shading, "vertex", program.output) + note;
     fragment = header(program.reflection, shading, "fragment", program.output) + note;
     const bool pixel = program.output == FragmentOutput::Pixel;
@@ -507,9 +525,17 @@ Shaders generate_glass(const GlassProgram& program) {
         "\n"
         "uniform int u_object;      // the object's number in the scene (u_objects)\n"
         "uniform int u_face_base;   // its first triangle in u_faces\n"
-        "uniform int u_depth_only;  // 1: the depth pass before the traced one\n"
+        "uniform int u_pass;        // 0: depth only, 1: record, 2: trace (below)\n"
+        "// What pass 1 recorded of each pixel's nearest glass fragment, read by pass 2:\n"
+        "uniform sampler2D u_record_point;   // (p, object); object -1: no glass there\n"
+        "uniform sampler2D u_record_normal;  // (N_s, 0)\n"
+        "uniform sampler2D u_record_face;    // (N_g, 0)\n"
+        "uniform sampler2D u_record_own;     // (the local part, 0)\n"
         "\n"
-        "out vec4 frag_color;\n";
+        "layout(location = 0) out vec4 frag_color;  // pass 1: (p, object)\n"
+        "layout(location = 1) out vec4 record_normal;\n"
+        "layout(location = 2) out vec4 record_face;\n"
+        "layout(location = 3) out vec4 record_own;\n";
     fragment +=
         lighting_declarations(program.reflection, capacity, lights) +
         glass_declarations(program.models, lights) + own_model +
@@ -517,10 +543,27 @@ Shaders generate_glass(const GlassProgram& program) {
     fragment +=
         "\n"
         "// The local part (1 - t)*I_ad + I_s by the shading model, plus the traced\n"
-        "// bracket at the fragment's point with its N_s.\n"
+        "// bracket at the fragment's point with its N_s, in three passes: the glass\n"
+        "// objects' depth (0); what the tree needs of each pixel's nearest glass\n"
+        "// fragment, recorded (1); the trees, traced by one triangle over the whole\n"
+        "// picture (2), so that the fragments of a SIMD group are whole blocks of\n"
+        "// pixels rather than the few a small triangle covers.\n"
         "void main() {\n"
-        "    if (u_depth_only != 0) {\n"
+        "    if (u_pass == 0) {\n"
         "        frag_color = vec4(0.0);\n"
+        "        return;\n"
+        "    }\n"
+        "    if (u_pass == 2) {\n"
+        "        ivec2 at = ivec2(gl_FragCoord.xy);\n"
+        "        vec4 point = texelFetch(u_record_point, at, 0);\n"
+        "        if (point.w < 0.0) discard;\n"
+        "        vec3 d = unit_vector(point.xyz - u_eye);\n"
+        "        vec3 bracket = trace_bracket(int(point.w), point.xyz, d,\n"
+        "                                     texelFetch(u_record_normal, at, 0).xyz,\n"
+        "                                     texelFetch(u_record_face, at, 0).xyz);\n"
+        "        frag_color = vec4(" +
+        std::string(pixel ? "to_pixel" : "sample_light") +
+        "(texelFetch(u_record_own, at, 0).xyz + bracket), 1.0);\n"
         "        return;\n"
         "    }\n"
         "    vec3 face = texelFetch(u_faces, u_face_base + gl_PrimitiveID).xyz;\n"
@@ -545,10 +588,10 @@ Shaders generate_glass(const GlassProgram& program) {
     fragment +=
         "    float t = object_transmission(u_object);\n"
         "    vec3 own = (1.0 - t) * ambient_diffuse + (all - ambient_diffuse);\n"
-        "    vec3 d = unit_vector(p - u_eye);\n"
-        "    frag_color = vec4(" +
-        std::string(pixel ? "to_pixel" : "sample_light") +
-        "(own + trace_bracket(u_object, p, d, normal, face)), 1.0);\n"
+        "    frag_color = vec4(p, float(u_object));\n"
+        "    record_normal = vec4(normal, 0.0);\n"
+        "    record_face = vec4(face, 0.0);\n"
+        "    record_own = vec4(own, 0.0);\n"
         "}\n";
     return shaders;
 }
