@@ -345,71 +345,72 @@ vec3 trace_bracket(int object, vec3 p, vec3 d, vec3 shading_normal, vec3 face_no
     int depth = 1;
     int inside = -1;
     int beyond = object;
+    bool split = true;  // `at`'s two rays are still to go (one ray a turn)
     while (true) {
-        // The mirror ray stays on this side, the refracted one crosses.
-        if (at.fresnel > 0.0 && sp < RAY_STACK)
-            stack[sp++] = Ray(point, normalize(at.reflected), weight * (share * at.fresnel),
-                              depth + 1, inside);
-        if (at.tir < 0.5 && sp < RAY_STACK)
-            stack[sp++] = Ray(point, normalize(at.refracted),
-                              weight * (share * (1.0 - at.fresnel)), depth + 1, beyond);
-        bool split = false;
-        while (sp > 0 && !split) {
-            Ray ray = stack[--sp];
-            // Item 9: too deep or too faint: L = 0.
-            if (ray.depth > u_max_depth || largest(ray.weight) < 1.0 / 1024.0) continue;
-            Hit hit = nearest(ray.origin, ray.direction, ray.inside, u_min_distance);
-            if (hit.object < 0) {
-                if (ray.inside < 0) total += ray.weight * u_background_light;
-                continue;  // a ray inside that finds no exit: L = 0
-            }
-            int at_texel = 7 * hit.index;
-            vec3 p0 = texelFetch(u_triangles, at_texel).xyz;
-            vec3 p1 = texelFetch(u_triangles, at_texel + 1).xyz;
-            vec3 p2 = texelFetch(u_triangles, at_texel + 2).xyz;
-            vec3 face = texelFetch(u_triangles, at_texel + 3).xyz;
-            float b0 = 1.0 - hit.b1 - hit.b2;
-            point = b0 * p0 + hit.b1 * p1 + hit.b2 * p2;
-            vec4 glass = object_glass(hit.object);  // (n_o, model, smooth, clear)
-            vec3 normal = face;
-            if (glass.z > 0.5) {  // gouraud and phong are lit per point here
-                vec3 mixed = b0 * texelFetch(u_triangles, at_texel + 4).xyz +
-                             hit.b1 * texelFetch(u_triangles, at_texel + 5).xyz +
-                             hit.b2 * texelFetch(u_triangles, at_texel + 6).xyz;
-                float len = length(mixed);
-                if (len > 0.0) normal = mixed / len;
-            }
-            bool entering = ray.inside < 0;
-            float transmission = object_transmission(hit.object);
-            int model = int(glass.y);
-            if (entering && !(transmission > 0.0)) {
-                total += ray.weight * shade_material(point, normal, -ray.direction,
-                                                     object_material(hit.object), model);
-                continue;
-            }
-            weight = ray.weight;
-            share = 1.0;
-            if (entering) {
-                Material m = object_material(hit.object);
-                vec3 all = shade_material(point, normal, -ray.direction, m, model);
-                m.ks = 0.0;
-                vec3 ambient_diffuse = shade_material(point, normal, -ray.direction, m, model);
-                total += ray.weight * ((1.0 - transmission) * ambient_diffuse +
-                                       (all - ambient_diffuse));
-                share = transmission;
-            } else if (glass.w < 0.5) {
-                vec4 a = object_absorption(hit.object);
-                weight = weight * absorption(a.xyz, hit.t, a.w);
-            }
-            float n1 = entering ? u_room_ior : glass.x;
-            float n2 = entering ? glass.x : u_room_ior;
-            at = bend(ray.direction, normal, face, entering, n1 / n2);
-            depth = ray.depth;
-            inside = ray.inside;
-            beyond = entering ? hit.object : -1;
-            split = true;
+        if (split) {
+            // The mirror ray stays on this side, the refracted one crosses.
+            if (at.fresnel > 0.0 && sp < RAY_STACK)
+                stack[sp++] = Ray(point, normalize(at.reflected), weight * (share * at.fresnel),
+                                  depth + 1, inside);
+            if (at.tir < 0.5 && sp < RAY_STACK)
+                stack[sp++] = Ray(point, normalize(at.refracted),
+                                  weight * (share * (1.0 - at.fresnel)), depth + 1, beyond);
+            split = false;
         }
-        if (!split) break;
+        if (sp == 0) break;
+        Ray ray = stack[--sp];
+        // Item 9: too deep or too faint: L = 0.
+        if (ray.depth > u_max_depth || largest(ray.weight) < 1.0 / 1024.0) continue;
+        Hit hit = nearest(ray.origin, ray.direction, ray.inside, u_min_distance);
+        if (hit.object < 0) {
+            if (ray.inside < 0) total += ray.weight * u_background_light;
+            continue;  // a ray inside that finds no exit: L = 0
+        }
+        int at_texel = 7 * hit.index;
+        vec3 p0 = texelFetch(u_triangles, at_texel).xyz;
+        vec3 p1 = texelFetch(u_triangles, at_texel + 1).xyz;
+        vec3 p2 = texelFetch(u_triangles, at_texel + 2).xyz;
+        vec3 face = texelFetch(u_triangles, at_texel + 3).xyz;
+        float b0 = 1.0 - hit.b1 - hit.b2;
+        point = b0 * p0 + hit.b1 * p1 + hit.b2 * p2;
+        vec4 glass = object_glass(hit.object);  // (n_o, model, smooth, clear)
+        vec3 normal = face;
+        if (glass.z > 0.5) {  // gouraud and phong are lit per point here
+            vec3 mixed = b0 * texelFetch(u_triangles, at_texel + 4).xyz +
+                         hit.b1 * texelFetch(u_triangles, at_texel + 5).xyz +
+                         hit.b2 * texelFetch(u_triangles, at_texel + 6).xyz;
+            float len = length(mixed);
+            if (len > 0.0) normal = mixed / len;
+        }
+        bool entering = ray.inside < 0;
+        float transmission = object_transmission(hit.object);
+        int model = int(glass.y);
+        if (entering && !(transmission > 0.0)) {
+            total += ray.weight * shade_material(point, normal, -ray.direction,
+                                                 object_material(hit.object), model);
+            continue;
+        }
+        weight = ray.weight;
+        share = 1.0;
+        if (entering) {
+            Material m = object_material(hit.object);
+            vec3 all = shade_material(point, normal, -ray.direction, m, model);
+            m.ks = 0.0;
+            vec3 ambient_diffuse = shade_material(point, normal, -ray.direction, m, model);
+            total += ray.weight * ((1.0 - transmission) * ambient_diffuse +
+                                   (all - ambient_diffuse));
+            share = transmission;
+        } else if (glass.w < 0.5) {
+            vec4 a = object_absorption(hit.object);
+            weight = weight * absorption(a.xyz, hit.t, a.w);
+        }
+        float n1 = entering ? u_room_ior : glass.x;
+        float n2 = entering ? glass.x : u_room_ior;
+        at = bend(ray.direction, normal, face, entering, n1 / n2);
+        depth = ray.depth;
+        inside = ray.inside;
+        beyond = entering ? hit.object : -1;
+        split = true;
     }
     return total;
 }
