@@ -582,6 +582,18 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
         {"vw 1 2 -1e39", "mesh.obj:3:8: error: cannot read '" + std::string("mesh.obj") +
                              "': vertex weight's weight '-1e39' is beyond the range of numbers "
                              "litkit reads"},
+        // tinyobjloader makes a zero mantissa with an exponent of 442 or
+        // more 0 * 5^e = NaN, where std::from_chars reads 0: fuzz_obj found
+        // the joint (a NaN made an int); a coordinate too.
+        {"vw 0 1  in) 00e7066", "mesh.obj:3:13: error: cannot read '" + std::string("mesh.obj") +
+                                    "': vertex weight's joint '00e7066' is not a joint number (0 "
+                                    "to 2147483520)"},
+        {"v 0 0e442 0", "mesh.obj:3:5: error: cannot read '" + std::string("mesh.obj") +
+                            "': vertex y coordinate '0e442' is beyond the range of numbers litkit "
+                            "reads"},
+        {"vn 0 0 .0e999", "mesh.obj:3:8: error: cannot read '" + std::string("mesh.obj") +
+                              "': normal z coordinate '.0e999' is beyond the range of numbers "
+                              "litkit reads"},
         // A lone carriage return ends a line, for tinyobjloader and so for
         // litkit: the vertex is line 4.
         {"s 1\rv 0 0 12e214748364838",
@@ -601,7 +613,8 @@ TEST_F(Reliability, BadObjNumbersAreLocatedErrors) {
     // uses neither), as are a tag's name and counts that would be beyond
     // the range as reals, and the largest joint.
     for (const char* line : {"vw 1 2 0e2147483647", "t name 0/1/0 -.E+0002147483647",
-                             "t 1e2147483648 1e2147483648/0/0", "vw 1 2147483520 0.5"}) {
+                             "t 1e2147483648 1e2147483648/0/0", "vw 1 2147483520 0.5",
+                             "vw 1 2 0e500x", "t name 0/1/0 -0e600", "v 0 0e441 0"}) {
         write("mesh.obj", "v 0 0 0\nv 1 0 0\n" + std::string(line) + "\nv 0 1 0\nf 1 2 3\n");
         CommandRun run = cli("check mesh.toml");
         EXPECT_EQ(run.status, 0) << line << run.output;

@@ -81,13 +81,78 @@ bool beyond_float(double value) {
     return std::isfinite(value) && std::abs(value) > std::numeric_limits<float>::max();
 }
 
-// A word tinyobjloader reads as a real that it cannot read safely: an
-// exponent that overflows its reader, or a number beyond a float's range.
-// (Not a number at all: it reads its default, safely.)
-bool beyond_reader(std::string_view word) {
+// The number tinyobjloader's reader (tryParseDouble) makes of `word`, by
+// the same steps and the same arithmetic, which are not std::from_chars':
+// the digits summed in a double (fractional ones times 10^-k), then
+// mantissa · 5^e, scaled by 2^e. A zero mantissa with an exponent of 442
+// or more is thus 0 · ∞, NaN, where from_chars reads 0 (found by fuzz_obj:
+// "vw 0 1 in) 00e7066", a NaN joint made an int). Like the reader, it
+// takes the longest number at the word's start and ignores the rest
+// ("1x" is 1). False where the reader finds no number (it then stores its
+// default) or its exponent overflows (exponent_overflows_reader).
+bool reader_value(std::string_view word, double& value) {
+    const std::size_t n = word.size();
+    const auto digit = [&](std::size_t k) { return k < n && word[k] >= '0' && word[k] <= '9'; };
+    std::size_t i = 0;
+    bool negative = false;
+    if (n > 0 && (word[0] == '+' || word[0] == '-')) {
+        negative = word[0] == '-';
+        ++i;
+    } else if (!(digit(0) || (n > 0 && word[0] == '.'))) {
+        return false;
+    }
+    double mantissa = 0.0;
+    if (!(i < n && word[i] == '.')) {
+        const std::size_t start = i;
+        for (; digit(i); ++i) mantissa = mantissa * 10 + (word[i] - '0');
+        if (i == start) return false;
+    }
+    long long exponent = 0;
+    if (i < n && word[i] == '.') {
+        static constexpr double tenths[] = {1.0,    0.1,     0.01,     0.001,
+                                            0.0001, 0.00001, 0.000001, 0.0000001};
+        ++i;
+        for (int k = 1; digit(i); ++k, ++i)
+            mantissa += (word[i] - '0') * (k < 8 ? tenths[k] : std::pow(10.0, -k));
+    }
+    if (i < n && (word[i] == 'e' || word[i] == 'E')) {
+        ++i;
+        bool exponent_negative = false;
+        if (i < n && (word[i] == '+' || word[i] == '-'))
+            exponent_negative = word[i++] == '-';
+        else if (!digit(i))
+            return false;
+        const std::size_t start = i;
+        for (; digit(i); ++i) {
+            if (exponent > 214748364) return false;  // the reader's own guard: no number
+            exponent = exponent * 10 + (word[i] - '0');
+        }
+        if (i == start || exponent > std::numeric_limits<int>::max()) return false;
+        if (exponent_negative) exponent = -exponent;
+    }
+    const int e = static_cast<int>(exponent);
+    value = (negative ? -1 : 1) * (e ? std::ldexp(mantissa * std::pow(5.0, e), e) : mantissa);
+    return true;
+}
+
+// Whether tinyobjloader stores what it reads of `word` as a finite float:
+// not NaN, not infinite, not beyond a float's range (undefined behaviour
+// by the letter). A word it reads no number from is safe (its default).
+bool reader_finite_float(std::string_view word) {
     double value = 0;
+    return !reader_value(word, value) || (std::isfinite(value) && !beyond_float(value));
+}
+
+// A word tinyobjloader reads as a real that it cannot read safely: an
+// exponent that overflows its reader, or a finite number beyond a float's
+// range, as std::from_chars or as the reader reads it. (Not a number at
+// all: it reads its default, safely; NaN and infinity, which a weight or a
+// tag may become, are floats too, and litkit uses neither.)
+bool beyond_reader(std::string_view word) {
+    double value = 0, read = 0;
     bool out_of_range = false;
     if (exponent_overflows_reader(word)) return true;
+    if (reader_value(word, read) && beyond_float(read)) return true;
     const bool number = read_number(word, value, out_of_range);
     return out_of_range || (number && beyond_float(value));
 }
@@ -155,8 +220,9 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                     fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
                                               "' is not a finite number");
                 // Stored as a float: a double beyond its range has no float
-                // to round to (undefined, not infinity, by the letter).
-                if (beyond_float(value))
+                // to round to (undefined, not infinity, by the letter); and
+                // what the reader makes of it must be that number too.
+                if (beyond_float(value) || !reader_finite_float(words[i].text))
                     fail(words[i].column, std::string(what) + axis + " coordinate '" + word +
                                               "' is beyond the range of numbers litkit reads");
             }
@@ -185,11 +251,15 @@ void check_obj_numbers(std::string_view text, const std::string& name) {
                 double joint = 0;
                 bool out_of_range = false;
                 // Read as a double, stored as a float, made an int: the
-                // float must be below 2^31 (2147483600 rounds up to it).
+                // float must be below 2^31 (2147483600 rounds up to it),
+                // as read by std::from_chars and by the reader itself.
+                double read = 0;
+                const auto joint_number = [](double j) {
+                    return j >= 0.0 && j <= 2147483647.0 && static_cast<float>(j) < 2147483648.0f;
+                };
                 if (exponent_overflows_reader(words[i].text) ||
-                    !read_number(words[i].text, joint, out_of_range) ||
-                    !(joint >= 0.0 && joint <= 2147483647.0 &&
-                      static_cast<float>(joint) < 2147483648.0f))
+                    !read_number(words[i].text, joint, out_of_range) || !joint_number(joint) ||
+                    (reader_value(words[i].text, read) && !joint_number(read)))
                     fail(words[i].column, "vertex weight's joint '" + std::string(words[i].text) +
                                               "' is not a joint number (0 to 2147483520)");
                 if (i + 1 < words.size() && beyond_reader(words[i + 1].text))
